@@ -1,0 +1,23 @@
+using System;
+using BenchmarkDotNet.Running;
+
+namespace AcDream.Core.Benchmarks;
+
+/// <summary>
+/// Entry point. <c>report</c> runs the accuracy-versus-cost report (add <c>--quick</c> for a short CI run that writes nothing);
+/// anything else goes to BenchmarkDotNet's switcher (e.g. <c>--filter '*'</c>, <c>--job Dry</c>).
+/// </summary>
+public static class Program
+{
+    /// <summary>Runs the report or the BenchmarkDotNet switcher.</summary>
+    public static int Main(string[] args)
+    {
+        if (args.Length > 0 && string.Equals(args[0], "report", StringComparison.OrdinalIgnoreCase))
+        {
+            return Report.AccuracyReport.Run(args.AsSpan(1));
+        }
+
+        BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+        return 0;
+    }
+}

@@ -1,0 +1,151 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+public partial struct Frame
+{
+    /// <summary>The global direction of the local +Y (forward) axis, as retail computes it from the cached matrix.</summary>
+    // retail: Frame::get_vector_heading (acclient.c:357393)
+    public readonly Vector3 GetVectorHeading()
+    {
+        // Retail multiplies the other two columns by 0.0 rather than dropping them; a NaN or infinity there propagates.
+        float y = (float)(((double)_m7 + _m1) * 0.0 + _m4);
+        float z = (float)(((double)_m8 + _m2) * 0.0 + _m5);
+        float x = (float)(((double)_m6 + _m0) * 0.0 + _m3);
+        return new Vector3(x, y, z);
+    }
+
+    /// <summary>
+    /// Heading of the local +Y (forward) axis in degrees clockwise from north, in [0, 360):
+    /// <c>fmod(450 - atan2(fy, fx) in degrees, 360)</c>. North (+Y, the identity frame) is 0, east (+X) is 90.
+    /// </summary>
+    // retail: Frame::get_heading (acclient.c:357409)
+    public readonly double GetHeading()
+    {
+        double x = ((double)_m6 + _m0) * 0.0 + _m3;
+        double y = ((double)_m7 + _m1) * 0.0 + _m4;
+        return HeadingMath.CompassFromAtan2(System.Math.Atan2(y, x));
+    }
+
+    /// <summary>
+    /// Turns the frame to face <paramref name="degrees"/> (clockwise from north) while keeping its current pitch:
+    /// the forward vector becomes (sin h, cos h, current forward z) and <see cref="SetVectorHeading"/> rebuilds the rotation.
+    /// </summary>
+    // retail: Frame::set_heading (acclient.c:357691)
+    public void SetHeading(float degrees)
+    {
+        float dz = (float)(((double)_m8 + _m2) * 0.0 + _m5);
+        double rad = degrees * HeadingMath.DegToRad;
+        var direction = new Vector3((float)System.Math.Sin(rad), (float)System.Math.Cos(rad), dz);
+        SetVectorHeading(direction);
+    }
+
+    /// <summary>
+    /// Rebuilds the rotation so that local +Y points along <paramref name="heading"/> with no roll: yaw from its x,y and pitch
+    /// from its z. A vector shorter than EPSILON leaves the frame unchanged.
+    /// </summary>
+    // retail: Frame::set_vector_heading (acclient.c:357667)
+    public void SetVectorHeading(Vector3 heading)
+    {
+        Vector3 n = heading;
+        if (VectorMath.NormalizeCheckSmall(ref n))
+        {
+            return;
+        }
+
+        float yaw = (float)(-HeadingMath.CompassFromAtan2(System.Math.Atan2(n.Y, n.X)) * HeadingMath.DegToRad);
+        // Divergence: retail passes n.z straight to asin; a normalised z one ulp past ±1 would give NaN there and set_rotate
+        // would silently keep the old rotation. We clamp to [-1, 1] so such a vector still sets the heading.
+        double sinPitch = System.Math.Clamp((double)n.Z, -1.0, 1.0);
+        float pitch = (float)(System.Math.Asin(sinPitch) * HeadingMath.RadToDeg * HeadingMath.DegToRad);
+        EulerSetRotate(pitch, 0f, yaw, 0);
+    }
+
+    /// <summary>
+    /// Sets the rotation from Euler angles (radians) in the given Shoemake order code (retail uses order 0 = XYZ static):
+    /// the quaternion of rotating by <paramref name="x"/> about X, then <paramref name="y"/> about Y, then <paramref name="z"/> about Z,
+    /// all about the fixed axes.
+    /// </summary>
+    /// <remarks>Only order 0 is used by the physics; other order codes follow Shoemake's <c>Eul_ToQuat</c> as retail's table does.</remarks>
+    // retail: Frame::euler_set_rotate (acclient.c:357588), EulGetOrd (acclient.c:356963)
+    public void EulerSetRotate(float x, float y, float z, int order)
+    {
+        // Shoemake's order decoding: EulSafe = {0,1,2,0}, EulNext = {1,2,0,1}.
+        int f = order & 1;
+        int s = (order >> 1) & 1;
+        int n = (order >> 2) & 1;
+        int i = (order >> 3 & 3) switch { 0 => 0, 1 => 1, 2 => 2, _ => 0 };
+        int j = Next(i + n);
+        int k = Next(i + 1 - n);
+
+        double zv;
+        if (f == 1)
+        {
+            zv = x;
+            x = z;
+        }
+        else
+        {
+            zv = z;
+        }
+
+        if (n == 1)
+        {
+            y = -y;
+        }
+
+        double ti = x * 0.5;
+        double tj = y * 0.5;
+        float th = (float)(zv * 0.5);
+        float ci = (float)System.Math.Cos(ti);
+        float cj = (float)System.Math.Cos(tj);
+        float ch = (float)System.Math.Cos(th);
+        float si = (float)System.Math.Sin(ti);
+        double sj = System.Math.Sin(tj);
+        double sh = System.Math.Sin(th);
+        float cc = ch * ci;
+        float cs = (float)(ci * sh);
+        float sc = si * ch;
+        float ss = (float)(sh * si);
+
+        float a0 = 0f, a1 = 0f, a2 = 0f;
+        float w;
+        float ai, aj, ak;
+        if (s == 1)
+        {
+            ai = (float)(((double)sc + cs) * cj);
+            aj = (float)(((double)ss + cc) * sj);
+            ak = (float)(((double)cs - sc) * sj);
+            w = (float)(((double)cc - ss) * cj);
+        }
+        else
+        {
+            ai = (float)((double)sc * cj - cs * sj);
+            aj = (float)(cc * sj + (double)ss * cj);
+            ak = (float)((double)cs * cj - sc * sj);
+            w = (float)(ss * sj + (double)cc * cj);
+        }
+
+        if (n == 1)
+        {
+            aj = -aj;
+        }
+
+        Set(ref a0, ref a1, ref a2, i, ai);
+        Set(ref a0, ref a1, ref a2, j, aj);
+        Set(ref a0, ref a1, ref a2, k, ak);
+        SetRotate(w, a0, a1, a2);
+
+        static int Next(int idx) => idx switch { 0 => 1, 1 => 2, 2 => 0, _ => 1 };
+
+        static void Set(ref float v0, ref float v1, ref float v2, int index, float value)
+        {
+            switch (index)
+            {
+                case 0: v0 = value; break;
+                case 1: v1 = value; break;
+                default: v2 = value; break;
+            }
+        }
+    }
+}

@@ -1,0 +1,165 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+public partial struct Frame
+{
+    /// <summary>Maps a local point to parent (global) coordinates: M * p + origin.</summary>
+    // retail: Frame::localtoglobal (acclient.c:143701)
+    public readonly Vector3 LocalToGlobal(Vector3 p)
+    {
+        double z = (double)_m8 * p.Z + (double)_m2 * p.X + (double)_m5 * p.Y + Origin.Z;
+        double y = (double)_m7 * p.Z + (double)_m1 * p.X + (double)_m4 * p.Y + Origin.Y;
+        double x = (double)_m6 * p.Z + (double)_m0 * p.X + (double)_m3 * p.Y + Origin.X;
+        return new Vector3((float)x, (float)y, (float)z);
+    }
+
+    /// <summary>Maps a local direction to parent (global) coordinates: M * v (no translation).</summary>
+    // retail: Frame::localtoglobalvec (acclient.c:143658)
+    public readonly Vector3 LocalToGlobalVec(Vector3 v)
+    {
+        double z = (double)_m8 * v.Z + (double)_m2 * v.X + (double)_m5 * v.Y;
+        double y = (double)_m7 * v.Z + (double)_m1 * v.X + (double)_m4 * v.Y;
+        double x = (double)_m6 * v.Z + (double)_m0 * v.X + (double)_m3 * v.Y;
+        return new Vector3((float)x, (float)y, (float)z);
+    }
+
+    /// <summary>Maps a parent (global) point to local coordinates: Mᵀ * (p - origin).</summary>
+    // retail: Frame::globaltolocal (acclient.c:143717)
+    public readonly Vector3 GlobalToLocal(Vector3 p)
+    {
+        float dx = p.X - Origin.X;
+        float dy = p.Y - Origin.Y;
+        float dz = p.Z - Origin.Z;
+        double z = (double)dz * _m8 + (double)dx * _m6 + (double)dy * _m7;
+        double y = (double)dz * _m5 + (double)dx * _m3 + (double)dy * _m4;
+        double x = (double)dz * _m2 + (double)dx * _m0 + (double)dy * _m1;
+        return new Vector3((float)x, (float)y, (float)z);
+    }
+
+    /// <summary>Maps a parent (global) direction to local coordinates: Mᵀ * v.</summary>
+    // retail: Frame::globaltolocalvec (acclient.c:143674)
+    public readonly Vector3 GlobalToLocalVec(Vector3 v)
+    {
+        double z = (double)_m8 * v.Z + (double)_m6 * v.X + (double)_m7 * v.Y;
+        double y = (double)_m5 * v.Z + (double)_m3 * v.X + (double)_m4 * v.Y;
+        double x = (double)_m2 * v.Z + (double)_m0 * v.X + (double)_m1 * v.Y;
+        return new Vector3((float)x, (float)y, (float)z);
+    }
+
+    /// <summary>
+    /// Maps a point local to <paramref name="from"/> into this frame's local space (both frames in the same parent space).
+    /// </summary>
+    public readonly Vector3 LocalToLocal(in Frame from, Vector3 p) => GlobalToLocal(from.LocalToGlobal(p));
+
+    /// <summary>
+    /// Rotates by an angular displacement given in LOCAL axes (radians): the vector is lifted to global axes with the
+    /// cached matrix and applied through <see cref="GRotate"/>.
+    /// </summary>
+    // retail: Frame::rotate (acclient.c:143690)
+    public void Rotate(Vector3 w)
+    {
+        float gx = (float)((double)_m6 * w.Z + (double)_m0 * w.X + (double)_m3 * w.Y);
+        float gy = (float)((double)_m7 * w.Z + (double)_m1 * w.X + (double)_m4 * w.Y);
+        float gz = (float)((double)_m8 * w.Z + (double)_m2 * w.X + (double)_m5 * w.Y);
+        GRotate(new Vector3(gx, gy, gz));
+    }
+
+    /// <summary>
+    /// Rotates by an angular displacement given in GLOBAL axes (radians, e.g. omega * dt): the axis-angle quaternion
+    /// (cos θ/2, sin θ/2 · w/θ) is pre-multiplied onto the current quaternion and the result renormalised.
+    /// Skipped when |w|² is below EPSILON².
+    /// </summary>
+    // retail: Frame::grotate (acclient.c:357421)
+    public void GRotate(Vector3 w)
+    {
+        double mag2 = (double)w.X * w.X + (double)w.Y * w.Y + (double)w.Z * w.Z;
+        if (mag2 < (double)PhysicsGlobals.Epsilon * PhysicsGlobals.Epsilon)
+        {
+            return;
+        }
+
+        double theta = System.Math.Sqrt(mag2);
+        float thetaInv = (float)(1.0 / theta);
+        double half = theta * 0.5;
+        double s = System.Math.Sin(half);
+        float c = (float)System.Math.Cos(half);
+        float f = (float)(s * w.X * thetaInv);
+        float g = (float)(thetaInv * s * w.Y);
+        double h = s * thetaInv * w.Z;
+        float nz = (float)((double)f * _qy + (double)c * _qz - (double)g * _qx + h * _qw);
+        float ny = (float)((double)c * _qy - (double)f * _qz + h * _qx + (double)g * _qw);
+        float nx = (float)((double)c * _qx + (double)g * _qz + (double)f * _qw - h * _qy);
+        float nw = (float)((double)c * _qw - (double)f * _qx - (double)g * _qy - h * _qz);
+        SetRotate(nw, nx, ny, nz);
+    }
+
+    /// <summary>Linear interpolation of the origin between two frames: (1 - t) * from + t * to.</summary>
+    // retail: Frame::interpolate_origin (acclient.c:357228)
+    public void InterpolateOrigin(in Frame from, in Frame to, float t)
+    {
+        float ty = t * to.Origin.Y;
+        float tz = t * to.Origin.Z;
+        double oneMinusT = 1.0 - t;
+        float fx = (float)(oneMinusT * from.Origin.X);
+        float fy = (float)(oneMinusT * from.Origin.Y);
+        float fz = (float)(oneMinusT * from.Origin.Z);
+        float z = fz + tz;
+        float x = t * to.Origin.X + fx;
+        float y = fy + ty;
+        Origin = new Vector3(x, y, z);
+    }
+
+    /// <summary>
+    /// Spherical interpolation of the rotation from <paramref name="from"/> to <paramref name="to"/> at fraction <paramref name="t"/>,
+    /// taking the shorter arc (negating <paramref name="to"/> when the dot product is negative); falls back to linear weights when
+    /// the rotations are within EPSILON or the slerp weights leave [0, 1].
+    /// </summary>
+    // retail: Frame::interpolate_rotation (acclient.c:357257)
+    public void InterpolateRotation(in Frame from, in Frame to, float t)
+    {
+        double cosom = (double)from._qy * to._qy + (double)from._qw * to._qw + (double)from._qx * to._qx + (double)from._qz * to._qz;
+        float tw, tx, ty, tz;
+        if (cosom < 0.0)
+        {
+            cosom = -cosom;
+            tw = -to._qw;
+            tx = -to._qx;
+            ty = -to._qy;
+            tz = -to._qz;
+        }
+        else
+        {
+            tw = to._qw;
+            tx = to._qx;
+            ty = to._qy;
+            tz = to._qz;
+        }
+
+        double scale0, scale1;
+        if (1.0 - cosom <= PhysicsGlobals.Epsilon)
+        {
+            scale0 = 1.0 - t;
+            scale1 = t;
+        }
+        else
+        {
+            double omega = System.Math.Acos(cosom);
+            double oneMinusT = 1.0 - t;
+            double invSin = 1.0 / System.Math.Sin(omega);
+            scale0 = invSin * System.Math.Sin(omega * oneMinusT);
+            scale1 = System.Math.Sin(t * omega) * invSin;
+            if (scale0 < 0.0 || scale0 > 1.0 || scale1 < 0.0 || scale1 > 1.0)
+            {
+                scale0 = oneMinusT;
+                scale1 = t;
+            }
+        }
+
+        float nz = (float)(tz * scale1 + from._qz * scale0);
+        float ny = (float)(from._qy * scale0 + ty * scale1);
+        float nx = (float)(from._qx * scale0 + tx * scale1);
+        float nw = (float)(scale0 * from._qw + tw * scale1);
+        SetRotate(nw, nx, ny, nz);
+    }
+}

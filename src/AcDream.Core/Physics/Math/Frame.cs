@@ -1,0 +1,341 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// A rigid transform in retail's layout: an origin, a unit quaternion stored w, x, y, z, and the cached 3x3
+/// local-to-global rotation matrix that retail keeps in step with the quaternion (<c>Frame</c>, PORTAL/cgeometry/CFrame.c).
+/// </summary>
+/// <remarks>
+/// <para><b>Conventions.</b> +X east, +Y north, +Z up; headings are degrees clockwise from north (+Y), so heading 90 faces +X.</para>
+/// <para><b>The cached matrix</b> <c>m_fl2gv[0..8]</c> (<see cref="M0"/>..<see cref="M8"/>) is stored by columns: entries 0..2 are
+/// the global image of the local X axis, 3..5 of local Y, 6..8 of local Z. So a local point p maps to
+/// <c>global = M0..2 * p.x + M3..5 * p.y + M6..8 * p.z + origin</c>. From the quaternion (w, x, y, z):
+/// <code>
+/// M0 = 1 - 2y² - 2z²   M3 = 2xy - 2wz       M6 = 2xz + 2wy
+/// M1 = 2xy + 2wz       M4 = 1 - 2x² - 2z²   M7 = 2yz - 2wx
+/// M2 = 2xz - 2wy       M5 = 2yz + 2wx       M8 = 1 - 2x² - 2y²
+/// </code></para>
+/// <para><b>Arithmetic.</b> Retail computed its intermediates on the x87 stack; this port evaluates them in double in retail's
+/// operand order and rounds to float exactly where retail stored a float, so results are bit-for-bit repeatable.
+/// No System.Numerics helper that may fuse multiply-add is used here.</para>
+/// <para>The quaternion is changed only through <see cref="SetRotate(float, float, float, float)"/> and the operations that call it,
+/// which renormalise and recache; <see cref="Origin"/> is a plain field that carries no validation (use <see cref="IsValid"/>).</para>
+/// </remarks>
+public partial struct Frame : IEquatable<Frame>
+{
+    private float _qw, _qx, _qy, _qz;
+    private float _m0, _m1, _m2, _m3, _m4, _m5, _m6, _m7, _m8;
+
+    /// <summary>The frame's origin, in the coordinates of its parent (for a position: local to its landblock), metres.</summary>
+    public Vector3 Origin;
+
+    /// <summary>The identity frame: origin zero, quaternion (1, 0, 0, 0), identity matrix.</summary>
+    public static Frame Identity
+    {
+        get
+        {
+            Frame f = default;
+            f._qw = 1f;
+            f.Cache();
+            return f;
+        }
+    }
+
+    /// <summary>
+    /// Creates a frame from an origin and a rotation. The rotation is normalised as <c>set_rotate</c> does.
+    /// </summary>
+    /// <exception cref="ArgumentException">The origin or the rotation has a NaN or infinite component, or the rotation is zero.</exception>
+    public Frame(Vector3 origin, Quaternion rotation)
+    {
+        if (!VectorMath.IsFinite(origin))
+        {
+            throw new ArgumentException("Frame origin must be finite.", nameof(origin));
+        }
+
+        if (!VectorMath.IsFinite(rotation))
+        {
+            throw new ArgumentException("Frame rotation must be finite.", nameof(rotation));
+        }
+
+        this = Identity;
+        Origin = origin;
+        if (!IsValidRotation(rotation) || !SetRotate(rotation.W, rotation.X, rotation.Y, rotation.Z))
+        {
+            throw new ArgumentException("Frame rotation must be a non-zero quaternion.", nameof(rotation));
+        }
+    }
+
+    /// <summary>Creates a frame at <paramref name="origin"/> facing <paramref name="headingDegrees"/> (clockwise from north).</summary>
+    /// <exception cref="ArgumentException">The origin or heading is NaN or infinite.</exception>
+    public static Frame FromHeading(Vector3 origin, float headingDegrees)
+    {
+        if (!VectorMath.IsFinite(origin))
+        {
+            throw new ArgumentException("Frame origin must be finite.", nameof(origin));
+        }
+
+        if (!float.IsFinite(headingDegrees))
+        {
+            throw new ArgumentException("Heading must be finite.", nameof(headingDegrees));
+        }
+
+        Frame f = Identity;
+        f.Origin = origin;
+        f.SetHeading(headingDegrees);
+        return f;
+    }
+
+    /// <summary>Quaternion w (scalar part).</summary>
+    public readonly float Qw => _qw;
+
+    /// <summary>Quaternion x.</summary>
+    public readonly float Qx => _qx;
+
+    /// <summary>Quaternion y.</summary>
+    public readonly float Qy => _qy;
+
+    /// <summary>Quaternion z.</summary>
+    public readonly float Qz => _qz;
+
+    /// <summary>The rotation as a System.Numerics quaternion (its X, Y, Z, W are retail's qx, qy, qz, qw).</summary>
+    public readonly Quaternion Rotation => new(_qx, _qy, _qz, _qw);
+
+    /// <summary>Cached matrix entry m_fl2gv[0]: global x of the local X axis.</summary>
+    public readonly float M0 => _m0;
+
+    /// <summary>Cached matrix entry m_fl2gv[1]: global y of the local X axis.</summary>
+    public readonly float M1 => _m1;
+
+    /// <summary>Cached matrix entry m_fl2gv[2]: global z of the local X axis.</summary>
+    public readonly float M2 => _m2;
+
+    /// <summary>Cached matrix entry m_fl2gv[3]: global x of the local Y axis.</summary>
+    public readonly float M3 => _m3;
+
+    /// <summary>Cached matrix entry m_fl2gv[4]: global y of the local Y axis.</summary>
+    public readonly float M4 => _m4;
+
+    /// <summary>Cached matrix entry m_fl2gv[5]: global z of the local Y axis.</summary>
+    public readonly float M5 => _m5;
+
+    /// <summary>Cached matrix entry m_fl2gv[6]: global x of the local Z axis.</summary>
+    public readonly float M6 => _m6;
+
+    /// <summary>Cached matrix entry m_fl2gv[7]: global y of the local Z axis.</summary>
+    public readonly float M7 => _m7;
+
+    /// <summary>Cached matrix entry m_fl2gv[8]: global z of the local Z axis.</summary>
+    public readonly float M8 => _m8;
+
+    /// <summary>Rebuilds the cached matrix from the quaternion (intermediates in double, as retail's x87 code).</summary>
+    // retail: Frame::cache (acclient.c:356983)
+    public void Cache()
+    {
+        double b2 = (double)_qx + _qx;
+        double c2 = (double)_qy + _qy;
+        double d2 = (double)_qz + _qz;
+        double wb = _qw * b2;
+        double wc = _qw * c2;
+        double wd = _qw * d2;
+        double xb = _qx * b2;
+        double xc = _qx * c2;
+        double xd = _qx * d2;
+        double yc = _qy * c2;
+        double yd = _qy * d2;
+        double zd = _qz * d2;
+        _m0 = (float)(1.0 - yc - zd);
+        _m1 = (float)(xc + wd);
+        _m2 = (float)(xd - wc);
+        _m3 = (float)(xc - wd);
+        double oneMinusXb = 1.0 - xb;
+        _m4 = (float)(oneMinusXb - zd);
+        _m5 = (float)(yd + wb);
+        _m6 = (float)(xd + wc);
+        _m7 = (float)(yd - wb);
+        _m8 = (float)(oneMinusXb - yc);
+    }
+
+    /// <summary>
+    /// True when no component is NaN and the quaternion's squared norm is within 5 * EPSILON of 1.
+    /// </summary>
+    // retail: Frame::IsValid (acclient.c:357024)
+    public readonly bool IsValid()
+    {
+        bool ok = !(float.IsNaN(Origin.X) || float.IsNaN(Origin.Y) || float.IsNaN(Origin.Z)
+                    || float.IsNaN(_qw) || float.IsNaN(_qx) || float.IsNaN(_qy) || float.IsNaN(_qz));
+        float norm = _qz * _qz + _qy * _qy + _qx * _qx + _qw * _qw;
+        if (float.IsNaN(norm) || (double)PhysicsGlobals.Epsilon * 5.0 < System.Math.Abs(norm - 1.0))
+        {
+            return false;
+        }
+
+        return ok;
+    }
+
+    /// <summary>
+    /// Retail's test used by <c>set_frame</c> to recover a frame whose origin is good but whose quaternion is not:
+    /// true when the origin has no NaN and at least one quaternion component is NaN.
+    /// </summary>
+    /// <remarks>The decompilation reads literally this way (acclient.c:357050) and its one caller, <c>set_frame</c>, zeroes the
+    /// quaternion when the frame is invalid and this returns true. We reproduce it as written.</remarks>
+    // retail: Frame::IsValidExceptForHeading (acclient.c:357050)
+    public readonly bool IsValidExceptForHeading()
+    {
+        return !float.IsNaN(Origin.X) && !float.IsNaN(Origin.Y) && !float.IsNaN(Origin.Z)
+               && (float.IsNaN(_qw) || float.IsNaN(_qx) || float.IsNaN(_qy) || float.IsNaN(_qz));
+    }
+
+    /// <summary>
+    /// Sets the rotation: normalises (w, x, y, z) and recaches the matrix; when the normalised quaternion is not valid
+    /// (zero, NaN or infinite input) the previous quaternion is restored and the cache is left as it was.
+    /// </summary>
+    /// <returns>True when the new rotation was accepted.</returns>
+    // retail: Frame::set_rotate (acclient.c:357062)
+    public bool SetRotate(float qw, float qx, float qy, float qz)
+    {
+        float oldW = _qw, oldX = _qx, oldY = _qy, oldZ = _qz;
+        double inv = 1.0 / System.Math.Sqrt((double)qw * qw + (double)qx * qx + (double)qy * qy + (double)qz * qz);
+        _qw = (float)(qw * inv);
+        _qx = (float)(qx * inv);
+        _qy = (float)(qy * inv);
+        _qz = (float)(inv * qz);
+        if (IsValid())
+        {
+            Cache();
+            return true;
+        }
+
+        _qw = oldW;
+        _qx = oldX;
+        _qy = oldY;
+        _qz = oldZ;
+        return false;
+    }
+
+    /// <summary>Sets the rotation from a System.Numerics quaternion (W is retail's qw); see <see cref="SetRotate(float, float, float, float)"/>.</summary>
+    public bool SetRotate(Quaternion q) => SetRotate(q.W, q.X, q.Y, q.Z);
+
+    /// <summary>
+    /// Writes raw quaternion components without normalising or recaching, as retail's member-wise copies do
+    /// (used by <c>set_frame</c>'s recovery, which zeroes the quaternion). Internal: it breaks the cache invariant.
+    /// </summary>
+    internal void SetQuaternionRaw(float qw, float qx, float qy, float qz)
+    {
+        _qw = qw;
+        _qx = qx;
+        _qy = qy;
+        _qz = qz;
+    }
+
+    /// <summary>Sets this frame to <paramref name="f1"/> ∘ <paramref name="f2"/>: <paramref name="f2"/> expressed in
+    /// <paramref name="f1"/>'s local space, lifted to <paramref name="f1"/>'s parent space.</summary>
+    /// <remarks>origin = f1.localtoglobal(f2.origin); q = f1.q * f2.q, renormalised by set_rotate.</remarks>
+    // retail: Frame::combine (acclient.c:319448)
+    public void Combine(in Frame f1, in Frame f2)
+    {
+        double ox = (double)f1._m6 * f2.Origin.Z + (double)f1._m0 * f2.Origin.X + (double)f1._m3 * f2.Origin.Y + f1.Origin.X;
+        double oy = (double)f1._m7 * f2.Origin.Z + (double)f1._m1 * f2.Origin.X + (double)f1._m4 * f2.Origin.Y + f1.Origin.Y;
+        double oz = (double)f1._m8 * f2.Origin.Z + (double)f1._m2 * f2.Origin.X + (double)f1._m5 * f2.Origin.Y + f1.Origin.Z;
+        float nz = (float)((double)f2._qy * f1._qx + (double)f2._qz * f1._qw - (double)f1._qy * f2._qx + (double)f1._qz * f2._qw);
+        float ny = (float)((double)f2._qy * f1._qw - (double)f2._qz * f1._qx + (double)f1._qz * f2._qx + (double)f1._qy * f2._qw);
+        float nx = (float)((double)f1._qw * f2._qx + (double)f2._qz * f1._qy + (double)f2._qw * f1._qx - (double)f2._qy * f1._qz);
+        float nw = (float)((double)f1._qw * f2._qw - (double)f2._qx * f1._qx - (double)f2._qy * f1._qy - (double)f2._qz * f1._qz);
+        Origin = new Vector3((float)ox, (float)oy, (float)oz);
+        SetRotate(nw, nx, ny, nz);
+    }
+
+    /// <summary>Returns <paramref name="f1"/> ∘ <paramref name="f2"/>; see <see cref="Combine(in Frame, in Frame)"/>.</summary>
+    public static Frame Combined(in Frame f1, in Frame f2)
+    {
+        Frame r = f1;
+        r.Combine(f1, f2);
+        return r;
+    }
+
+    /// <summary>
+    /// Sets this frame to the transform that maps <paramref name="f2"/>'s space into <paramref name="f1"/>'s relative
+    /// placement: q = f1.q * conj(f2.q), origin = f1.origin + R(q) * (-f2.origin). The inverse of <see cref="Combine"/>
+    /// on the right: if A = B ∘ C then subtract1(A, C) = B.
+    /// </summary>
+    // retail: Frame::subtract1 (acclient.c:357321)
+    public void Subtract1(in Frame f1, in Frame f2)
+    {
+        float nz = (float)((double)f1._qz * f2._qw - ((double)f1._qw * f2._qz + (double)f2._qy * f1._qx) + (double)f1._qy * f2._qx);
+        float ny = (float)((double)f1._qy * f2._qw - (double)f1._qw * f2._qy + (double)f2._qz * f1._qx - (double)f2._qx * f1._qz);
+        float nx = (float)((double)f1._qx * f2._qw - (double)f2._qx * f1._qw - (double)f1._qy * f2._qz + (double)f1._qz * f2._qy);
+        float nw = (float)((double)f1._qy * f2._qy + (double)f2._qx * f1._qx + (double)f1._qw * f2._qw + (double)f2._qz * f1._qz);
+        Vector3 f1o = f1.Origin;
+        Vector3 f2o = f2.Origin;
+        SetRotate(nw, nx, ny, nz);
+        double vx = -f2o.X;
+        double vy = -f2o.Y;
+        double vz = -f2o.Z;
+        float gx = (float)(vz * _m6 + vx * _m0 + vy * _m3);
+        float gy = (float)(vz * _m7 + vx * _m1 + vy * _m4);
+        double gz = vz * _m8 + vx * _m2 + vy * _m5;
+        Origin = new Vector3((float)(gx + (double)f1o.X), (float)(gy + (double)f1o.Y), (float)(gz + f1o.Z));
+    }
+
+    /// <summary>
+    /// Sets this frame to <paramref name="f1"/> expressed in <paramref name="f2"/>'s local space:
+    /// origin = f2.globaltolocal(f1.origin), q = conj(f2.q) * f1.q. The inverse of <see cref="Combine"/> on the left:
+    /// if A = B ∘ C then subtract2(A, B) = C.
+    /// </summary>
+    // retail: Frame::subtract2 (acclient.c:357364)
+    public void Subtract2(in Frame f1, in Frame f2)
+    {
+        Vector3 local = f2.GlobalToLocal(f1.Origin);
+        float nz = (float)((double)f1._qz * f2._qw - (double)f1._qy * f2._qx + (double)f1._qx * f2._qy - (double)f1._qw * f2._qz);
+        float ny = (float)((double)f1._qz * f2._qx + (double)f2._qw * f1._qy - (double)f2._qy * f1._qw - (double)f1._qx * f2._qz);
+        float nx = (float)((double)f1._qx * f2._qw - (double)f1._qw * f2._qx - (double)f2._qy * f1._qz + (double)f1._qy * f2._qz);
+        float nw = (float)((double)f1._qw * f2._qw + (double)f2._qy * f1._qy + (double)f1._qx * f2._qx + (double)f1._qz * f2._qz);
+        Origin = local;
+        SetRotate(nw, nx, ny, nz);
+    }
+
+    /// <summary>True when origins agree within EPSILON per axis (inclusive) and quaternion components within EPSILON (exclusive).</summary>
+    /// <remarks>Unlike ACE, orientation is compared. q and -q (the same rotation) are not equal here, as in retail.</remarks>
+    // retail: Frame::is_equal (acclient.c:96699), Frame::is_quaternion_equal (acclient.c:96712)
+    public readonly bool IsEqual(in Frame rhs)
+    {
+        const float eps = PhysicsGlobals.Epsilon;
+        bool originEqual = System.Math.Abs(Origin.X - rhs.Origin.X) <= eps
+                           && System.Math.Abs(Origin.Y - rhs.Origin.Y) <= eps
+                           && System.Math.Abs(Origin.Z - rhs.Origin.Z) <= eps;
+        return originEqual
+               && System.Math.Abs(_qw - rhs._qw) < eps
+               && System.Math.Abs(_qx - rhs._qx) < eps
+               && System.Math.Abs(_qy - rhs._qy) < eps
+               && System.Math.Abs(_qz - rhs._qz) < eps;
+    }
+
+    /// <summary>Bitwise equality of origin, quaternion and cache (for determinism checks; use <see cref="IsEqual"/> for retail's tolerance).</summary>
+    public readonly bool Equals(Frame other) =>
+        Origin.Equals(other.Origin)
+        && _qw.Equals(other._qw) && _qx.Equals(other._qx) && _qy.Equals(other._qy) && _qz.Equals(other._qz)
+        && _m0.Equals(other._m0) && _m1.Equals(other._m1) && _m2.Equals(other._m2)
+        && _m3.Equals(other._m3) && _m4.Equals(other._m4) && _m5.Equals(other._m5)
+        && _m6.Equals(other._m6) && _m7.Equals(other._m7) && _m8.Equals(other._m8);
+
+    /// <inheritdoc />
+    public override readonly bool Equals(object? obj) => obj is Frame f && Equals(f);
+
+    /// <inheritdoc />
+    public override readonly int GetHashCode() => HashCode.Combine(Origin, _qw, _qx, _qy, _qz);
+
+    /// <summary>Bitwise equality; see <see cref="Equals(Frame)"/>.</summary>
+    public static bool operator ==(Frame left, Frame right) => left.Equals(right);
+
+    /// <summary>Bitwise inequality; see <see cref="Equals(Frame)"/>.</summary>
+    public static bool operator !=(Frame left, Frame right) => !left.Equals(right);
+
+    /// <inheritdoc />
+    public override readonly string ToString() =>
+        string.Create(System.Globalization.CultureInfo.InvariantCulture,
+            $"[{Origin.X} {Origin.Y} {Origin.Z}] {_qw} {_qx} {_qy} {_qz}");
+
+    private static bool IsValidRotation(Quaternion q) =>
+        ((double)q.W * q.W + (double)q.X * q.X + (double)q.Y * q.Y + (double)q.Z * q.Z) > 0.0;
+}

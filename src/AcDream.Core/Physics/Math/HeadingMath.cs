@@ -1,0 +1,27 @@
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Retail's compass-heading arithmetic: degrees clockwise from north (+Y), in [0, 360).
+/// </summary>
+public static class HeadingMath
+{
+    /// <summary>Degrees per radian as retail's literal (57.29577951308232).</summary>
+    public const double RadToDeg = 57.29577951308232;
+
+    /// <summary>Radians per degree as retail's literal (0.0174532925199433).</summary>
+    public const double DegToRad = 0.0174532925199433;
+
+    /// <summary>
+    /// Converts a mathematical angle <c>atan2(y, x)</c> (radians, anticlockwise from +X) to a compass heading in degrees
+    /// clockwise from north: <c>fmod(450 - a * 57.29577951308232, 360)</c>. +Y gives 0, +X gives 90, -Y 180, -X 270.
+    /// C's <c>fmod</c> and C#'s <c>%</c> on doubles agree (both truncate towards zero; the argument is always positive here
+    /// because atan2 lies in [-180, 180] degrees).
+    /// </summary>
+    /// <remarks>
+    /// The decompilation prints these calls as <c>atan2(v.x, v.y)</c> (acclient.c:357409, 357667, 467050). Read literally, the
+    /// identity frame would face east with heading 90. We read the x87 <c>FPATAN</c> operand order as <c>atan2(v.y, v.x)</c>,
+    /// which makes the identity frame face north with heading 0 — the convention of the game data, of ACE's port and of this
+    /// library. The choice is pinned by <c>FrameHeadingTests</c>.
+    /// </remarks>
+    public static double CompassFromAtan2(double atan2Radians) => (450.0 - atan2Radians * RadToDeg) % 360.0;
+}
