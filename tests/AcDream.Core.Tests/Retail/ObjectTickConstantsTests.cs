@@ -122,4 +122,22 @@ public class ObjectTickConstantsTests
         Assert.Equal(50.0, outdoor.GetMaxConstraintDistance());
         Assert.Equal(20.0, indoor.GetMaxConstraintDistance());
     }
+
+    [Fact]
+    public void GetMinterp_CreatesAMovementManager_WithRetailNoWeenieSpeed4_AndActivates()
+    {
+        // get_minterp (acclient.c:319279) creates the movement manager when absent; CMotionInterp::get_max_speed
+        // (acclient.c:343485) returns 1.0 * 4.0 when there is no weenie object.
+        var world = new PhysicsWorld(3.0);
+        PhysicsObj obj = world.CreateObject();
+        IMotionInterpreter? minterp = obj.GetMinterp();
+        Assert.NotNull(minterp);
+        Assert.IsType<BasicMovementManager>(obj.MovementManager);
+        Assert.Equal(4.0, minterp!.GetMaxSpeed());
+        Assert.Equal(4.0, minterp.GetAdjustedMaxSpeed());
+        Assert.Equal(4.0, BasicMovementManager.NoWeenieMaxSpeed);
+        Assert.True(obj.IsActive);
+        Assert.Equal(3.0, obj.UpdateTime);
+        Assert.Same(minterp, obj.GetMinterp()); // created once
+    }
 }
