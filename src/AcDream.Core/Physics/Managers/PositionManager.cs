@@ -48,6 +48,7 @@ public sealed class PositionManager
     // retail: PositionManager::InterpolateTo (acclient.c:388316)
     public void InterpolateTo(in Position p, bool keepHeading)
     {
+        PhysicsObj.Touch();
         InterpolationManager ??= new InterpolationManager(PhysicsObj);
         InterpolationManager.InterpolateTo(p, keepHeading);
     }
@@ -64,6 +65,7 @@ public sealed class PositionManager
     // retail: PositionManager::StickTo (acclient.c:388341)
     public void StickTo(uint objectId, float radius, float height)
     {
+        PhysicsObj.Touch();
         StickyManager ??= new StickyManager(PhysicsObj);
         StickyManager.StickTo(objectId, radius, height);
     }
@@ -80,6 +82,7 @@ public sealed class PositionManager
     // retail: PositionManager::ConstrainTo (acclient.c:388366)
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {
+        PhysicsObj.Touch();
         ConstraintManager ??= new ConstraintManager(PhysicsObj);
         ConstraintManager.ConstrainTo(p, startDistance, maxDistance);
     }
@@ -87,6 +90,9 @@ public sealed class PositionManager
     /// <summary>Removes the constraint.</summary>
     // retail: PositionManager::UnConstrain (acclient.c:388380)
     public void UnConstrain() => ConstraintManager?.UnConstrain();
+
+    /// <summary>True while no sub-manager exists, so adjust_offset and UseTime do nothing (the scene may skip the object).</summary>
+    internal bool IsIdle => InterpolationManager is null && StickyManager is null && ConstraintManager is null;
 
     /// <summary>True when the constraint holds the object fully.</summary>
     // retail: PositionManager::IsFullyConstrained (acclient.c:388390)
