@@ -13,15 +13,15 @@ public sealed class ManagerScene
     public const uint Block = 0x7F7F0000u;
 
     /// <summary>Creates the scene with the creature at <paramref name="creatureOrigin"/> (landblock-local) facing
-    /// <paramref name="creatureHeading"/>.</summary>
-    public ManagerScene(Vector3 creatureOrigin, float creatureHeading = 0f, double startTime = 0.0)
+    /// <paramref name="creatureHeading"/>, and the player at <paramref name="playerOrigin"/> (default the block centre).</summary>
+    public ManagerScene(Vector3 creatureOrigin, float creatureHeading = 0f, double startTime = 0.0, Vector3? playerOrigin = null)
     {
         World = new PhysicsWorld(startTime);
         Ground = new FlatGroundTransition();
         World.Transition = Ground;
         Player = World.CreateObject(1);
         Player.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f };
-        Player.EnterWorld(At(new Vector3(96f, 96f, 0f)));
+        Player.EnterWorld(At(playerOrigin ?? new Vector3(96f, 96f, 0f)));
         World.Player = Player;
         CreatureParts = new SimplePartArray(1, 1) { Radius = 0.5f, Height = 1.8f };
         Creature = World.CreateObject(2);
