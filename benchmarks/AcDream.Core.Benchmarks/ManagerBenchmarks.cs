@@ -18,6 +18,7 @@ public class ManagerBenchmarks
     private ManagerScene _scene = null!;
     private Position[] _updates = null!;
     private double _now;
+    private ushort _stamp;
 
     /// <summary>A creature on flat ground with a full queue, a stick and a constraint.</summary>
     [GlobalSetup]
@@ -100,7 +101,8 @@ public class ManagerBenchmarks
             _now += 1.0 / 30.0;
             Position p = _updates[i & 63];
             p.Frame.Origin.Y += (float)(_now * 0.01 % 1.0);
-            _scene.Creature.ReceiveRemotePosition(p, false, true);
+            _stamp++;
+            _scene.Creature.HandleReceivedPosition(p, _stamp, 0, true);
             ticked |= _scene.World.Tick(_now);
         }
 

@@ -26,8 +26,8 @@ public sealed class PositionManager
     public ConstraintManager? ConstraintManager { get; private set; }
 
     /// <summary>
-    /// Client seam for the target tracking and move-to cancellation the sticky manager requests (retail's TargetManager and
-    /// MovementManager); null = nobody is told.
+    /// Client seam for the target tracking the sticky manager requests (retail's TargetManager); null = nobody is told.
+    /// (Its move-to cancellation goes to <see cref="PhysicsObj.MovementManager"/>.)
     /// </summary>
     public ITargetTracker? TargetTracker { get; set; }
 

@@ -216,8 +216,8 @@ public sealed class StickyManager
     {
         TargetId = 0;
         Initialized = false;
-        ITargetTracker? tracker = PhysicsObj.PositionManager?.TargetTracker;
-        tracker?.ClearTarget(PhysicsObj);
-        tracker?.CancelMoveTo(PhysicsObj, UnstickMoveToError);
+        PhysicsObj.PositionManager?.TargetTracker?.ClearTarget(PhysicsObj);
+        // retail: CPhysicsObj::cancel_moveto (acclient.c:317420) -> MovementManager::CancelMoveTo(0x36)
+        PhysicsObj.MovementManager?.CancelMoveTo(UnstickMoveToError);
     }
 }
