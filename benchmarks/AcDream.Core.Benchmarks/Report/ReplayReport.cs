@@ -83,7 +83,7 @@ internal static class ReplayReport
     private static string FindRepoRoot()
     {
         string? dir = AppContext.BaseDirectory;
-        while (dir is not null && !File.Exists(Path.Combine(dir, "AcDream.slnx")))
+        while (dir is not null && !File.Exists(Path.Combine(dir, "Directory.Build.props")))
         {
             dir = Path.GetDirectoryName(dir);
         }
