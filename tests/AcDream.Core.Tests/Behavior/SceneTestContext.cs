@@ -105,6 +105,7 @@ internal static class SceneTestContext
         }
 
         PhysicsObj player = Add(w, 1u, At(96f, 96f));
+        PhysicsObj remote = Add(w, 3000u, At(100f, 60f));
         double t = w.CurrentTime;
         for (int tick = 1; tick <= ticks; tick++)
         {
@@ -129,6 +130,12 @@ internal static class SceneTestContext
                 w.GetObjectById(2003u)!.SetVelocity(new Vector3(4f, 1f, 0f));
                 w.GetObjectById(107u)!.SetVelocity(new Vector3(-2f, 2f, 0f));
                 w.GetObjectById(118u)!.SetOmega(new Vector3(0f, 0f, 1.5f));
+            }
+
+            // A remote creature receives position updates (interpolation) now and then, and rests in between.
+            if ((tick >= 20 && tick < 100 && tick % 5 == 0) || tick == 180 || tick == 185)
+            {
+                remote.InterpolateTo(At(100f + (tick % 20), 60f + (tick % 13)), keepHeading: false);
             }
 
             if (tick == 50)

@@ -114,8 +114,12 @@ public sealed class PositionManager
     // retail: PositionManager::UnConstrain (acclient.c:388380)
     public void UnConstrain() => ConstraintManager?.UnConstrain();
 
-    /// <summary>True while no sub-manager exists, so adjust_offset and UseTime do nothing (the scene may skip the object).</summary>
-    internal bool IsIdle => InterpolationManager is null && StickyManager is null && ConstraintManager is null;
+    /// <summary>True while adjust_offset and UseTime would do nothing: no interpolation node and no pending blip, no sticky
+    /// target, no constraint (the scene may then skip a resting object).</summary>
+    internal bool IsIdle =>
+        (InterpolationManager is null || (InterpolationManager.Count == 0 && InterpolationManager.NodeFailCounter <= 0))
+        && (StickyManager is null || StickyManager.TargetId == 0)
+        && (ConstraintManager is null || !ConstraintManager.IsConstrained);
 
     /// <summary>True when the constraint holds the object fully.</summary>
     // retail: PositionManager::IsFullyConstrained (acclient.c:388390)

@@ -158,6 +158,7 @@ public sealed class StickyManager
     // retail: StickyManager::StickTo (acclient.c:388664)
     public void StickTo(uint objectId, float radius, float height)
     {
+        PhysicsObj.Touch();
         if (!float.IsFinite(radius))
         {
             throw new ArgumentException("Radius must be finite.", nameof(radius));

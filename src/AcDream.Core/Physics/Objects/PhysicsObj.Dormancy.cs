@@ -29,6 +29,7 @@ public sealed partial class PhysicsObj
     internal bool _inActiveList;
     internal bool _pendingWake;
     internal int _queueStamp;
+    internal bool _inGateQueue;
     private double _updateTime;
     private Vector3 _playerVector;
     internal float _playerDistance;

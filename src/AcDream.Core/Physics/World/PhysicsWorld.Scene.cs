@@ -35,8 +35,10 @@ public sealed partial class PhysicsWorld
     private PhysicsObj? _current;
     private double _odometer;
     private double _odometerBefore;
-    private readonly PriorityQueue<(PhysicsObj Obj, int Stamp), double> _gateQueue = new();
+    private readonly PriorityQueue<(PhysicsObj Obj, int Stamp), double> _gateQueue = new(64);
+    private int _gateCapacity = 64;
     private (PhysicsObj Obj, int Stamp)[] _gateScratch = new (PhysicsObj, int)[16];
+    private int _gateLive;
 
     /// <summary>
     /// The effects this scene simulates; <see cref="SceneEffects.All"/> (retail) by default. Declare fewer to pay for fewer.
@@ -124,7 +126,7 @@ public sealed partial class PhysicsWorld
     {
         obj.Materialize(IsVisitedThisTick(obj));
         obj._dormancy = Dormancy.Awake;
-        obj._queueStamp++;
+        GateForget(obj);
         EnqueueWake(obj);
     }
 
@@ -175,9 +177,77 @@ public sealed partial class PhysicsWorld
 
     private int _activeCursor;
 
+    private void GateEnqueue(PhysicsObj o, double key)
+    {
+        if (!o._inGateQueue)
+        {
+            o._inGateQueue = true;
+            _gateLive++;
+        }
+
+        if (_gateQueue.Count >= _gateCapacity)
+        {
+            // Stale entries (objects woken since they were queued) are dropped before the queue may grow, so repeated
+            // sleep/wake cycles never allocate; it grows only when live entries fill it.
+            CompactGateQueue();
+            if (_gateQueue.Count >= _gateCapacity / 2)
+            {
+                _gateCapacity = _gateQueue.EnsureCapacity(_gateCapacity * 2);
+            }
+        }
+
+        _gateQueue.Enqueue((o, o._queueStamp), key);
+    }
+
+    private void GateForget(PhysicsObj o)
+    {
+        o._queueStamp++;
+        if (o._inGateQueue)
+        {
+            o._inGateQueue = false;
+            _gateLive--;
+        }
+    }
+
+    /// <summary>Drops stale entries (objects woken since they were queued) so that sleep/wake cycles never grow the queue.</summary>
+    private void CompactGateQueue()
+    {
+        int n = 0;
+        while (_gateQueue.TryDequeue(out (PhysicsObj Obj, int Stamp) e, out double key))
+        {
+            if (e.Obj._queueStamp != e.Stamp || !e.Obj._inGateQueue)
+            {
+                continue;
+            }
+
+            if (n == _gateScratch.Length)
+            {
+                Array.Resize(ref _gateScratch, n * 2);
+                Array.Resize(ref _gateKeys, n * 2);
+            }
+
+            if (_gateKeys.Length < _gateScratch.Length)
+            {
+                Array.Resize(ref _gateKeys, _gateScratch.Length);
+            }
+
+            _gateScratch[n] = e;
+            _gateKeys[n] = key;
+            n++;
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            _gateQueue.Enqueue(_gateScratch[i], _gateKeys[i]);
+            _gateScratch[i] = default;
+        }
+    }
+
+    private double[] _gateKeys = new double[16];
+
     private void RemoveFromVisiting(PhysicsObj obj)
     {
-        obj._queueStamp++;
+        GateForget(obj);
         if (obj._inActiveList)
         {
             int at = Array.IndexOf(_active, obj, 0, _activeCount);
@@ -369,6 +439,8 @@ public sealed partial class PhysicsWorld
                 continue; // stale entry
             }
 
+            GateForget(e.Obj); // re-queued below unless it wakes
+
             if (n == _gateScratch.Length)
             {
                 Array.Resize(ref _gateScratch, n * 2);
@@ -385,7 +457,7 @@ public sealed partial class PhysicsWorld
             if (beforePlayer != objBeforePlayer && beforePlayer)
             {
                 // Ordered after the player: decided once the player has moved this tick.
-                _gateQueue.Enqueue((o, o._queueStamp), odometer);
+                GateEnqueue(o, odometer);
                 continue;
             }
 
@@ -405,7 +477,7 @@ public sealed partial class PhysicsWorld
             }
 
             o._playerDistanceAtSleep = df;
-            _gateQueue.Enqueue((o, o._queueStamp), seenOdo + margin - GateSafetyMargin(df));
+            GateEnqueue(o, seenOdo + margin - GateSafetyMargin(df));
         }
     }
 
@@ -427,12 +499,12 @@ public sealed partial class PhysicsWorld
             o._dormancy = d;
             o._sleepTick = _tick;
             o._sleepPhaseActive = (o._transientState & TransientState.Active) != 0;
-            o._queueStamp++;
+            GateForget(o);
             o._playerDistanceAtSleep = o._playerDistance;
             if (!float.IsNaN(margin) && d != Dormancy.Bailed)
             {
                 double seenOdo = _player is not null && o.WorldIndex < _player.WorldIndex ? _odometerBefore : _odometer;
-                _gateQueue.Enqueue((o, o._queueStamp), seenOdo + margin - GateSafetyMargin(o._playerDistance));
+                GateEnqueue(o, seenOdo + margin - GateSafetyMargin(o._playerDistance));
             }
         }
 
