@@ -1,0 +1,94 @@
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Owner of an object's position-correcting sub-managers (retail <c>PositionManager</c>, acclient.h:30952,
+/// PORTAL/cpmanager/CPositionManager.c). Each sub-manager is created on first use; one that does not exist costs nothing.
+/// </summary>
+public sealed class PositionManager
+{
+    // retail: PositionManager::Create (acclient.c:388404)
+    internal PositionManager(PhysicsObj physicsObj)
+    {
+        PhysicsObj = physicsObj;
+    }
+
+    /// <summary>The object this manager moves.</summary>
+    public PhysicsObj PhysicsObj { get; }
+
+    /// <summary>The interpolation manager, or null until <see cref="InterpolateTo"/> first runs.</summary>
+    public InterpolationManager? InterpolationManager { get; private set; }
+
+    /// <summary>The sticky manager, or null until <see cref="StickTo"/> first runs.</summary>
+    public StickyManager? StickyManager { get; private set; }
+
+    /// <summary>The constraint manager, or null until <see cref="ConstrainTo"/> first runs.</summary>
+    public ConstraintManager? ConstraintManager { get; private set; }
+
+    /// <summary>
+    /// Lets each sub-manager replace or adjust the step's local offset frame, in the order interpolation, sticky, constraint.
+    /// </summary>
+    // retail: PositionManager::adjust_offset (acclient.c:388286)
+    public void AdjustOffset(ref Frame offset, double quantum)
+    {
+        InterpolationManager?.AdjustOffset(ref offset, quantum);
+        StickyManager?.AdjustOffset(ref offset, quantum);
+        ConstraintManager?.AdjustOffset(ref offset, quantum);
+    }
+
+    /// <summary>End-of-step bookkeeping, in the order interpolation, constraint, sticky.</summary>
+    // retail: PositionManager::UseTime (acclient.c:388266)
+    public void UseTime()
+    {
+        InterpolationManager?.UseTime();
+        ConstraintManager?.UseTime();
+        StickyManager?.UseTime();
+    }
+
+    /// <summary>Queues an interpolation towards <paramref name="p"/>.</summary>
+    // retail: PositionManager::InterpolateTo (acclient.c:388316)
+    public void InterpolateTo(in Position p, bool keepHeading)
+    {
+        InterpolationManager ??= new InterpolationManager(PhysicsObj);
+        InterpolationManager.InterpolateTo(p, keepHeading);
+    }
+
+    /// <summary>Drops every queued interpolation node.</summary>
+    // retail: PositionManager::StopInterpolating (acclient.c:388331)
+    public void StopInterpolating() => InterpolationManager?.StopInterpolating();
+
+    /// <summary>True while interpolation nodes are queued.</summary>
+    // retail: PositionManager::IsInterpolating (acclient.c:388475)
+    public bool IsInterpolating() => InterpolationManager is not null && InterpolationManager.IsInterpolating();
+
+    /// <summary>Sticks the object to another object.</summary>
+    // retail: PositionManager::StickTo (acclient.c:388341)
+    public void StickTo(uint objectId, float radius, float height)
+    {
+        StickyManager ??= new StickyManager(PhysicsObj);
+        StickyManager.StickTo(objectId, radius, height);
+    }
+
+    /// <summary>Releases a sticky target.</summary>
+    // retail: PositionManager::UnStick (acclient.c:388306)
+    public void UnStick() => StickyManager?.HandleExitWorld();
+
+    /// <summary>Id of the sticky target, or 0.</summary>
+    // retail: PositionManager::GetStickyObjectID (acclient.c:388352)
+    public uint GetStickyObjectId() => StickyManager?.TargetId ?? 0u;
+
+    /// <summary>Constrains the object to stay near <paramref name="p"/>.</summary>
+    // retail: PositionManager::ConstrainTo (acclient.c:388366)
+    public void ConstrainTo(in Position p, float startDistance, float maxDistance)
+    {
+        ConstraintManager ??= new ConstraintManager(PhysicsObj);
+        ConstraintManager.ConstrainTo(p, startDistance, maxDistance);
+    }
+
+    /// <summary>Removes the constraint.</summary>
+    // retail: PositionManager::UnConstrain (acclient.c:388380)
+    public void UnConstrain() => ConstraintManager?.UnConstrain();
+
+    /// <summary>True when the constraint holds the object fully.</summary>
+    // retail: PositionManager::IsFullyConstrained (acclient.c:388390)
+    public bool IsFullyConstrained() => ConstraintManager is not null && ConstraintManager.IsFullyConstrained();
+}

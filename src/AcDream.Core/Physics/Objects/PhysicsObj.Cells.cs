@@ -1,0 +1,179 @@
+using System;
+
+namespace AcDream.Core.Physics;
+
+public sealed partial class PhysicsObj
+{
+    /// <summary>The object this one is attached to (retail <c>parent</c>), or null. A parented object is not simulated.</summary>
+    public PhysicsObj? Parent { get; private set; }
+
+    /// <summary>Objects attached to this one (retail <c>children</c>), or null when none was ever attached.</summary>
+    public ChildList? Children { get; private set; }
+
+    /// <summary>
+    /// Attaches this object to <paramref name="parent"/> at <paramref name="frame"/> relative to part
+    /// <paramref name="partIndex"/> (the parent's own frame when the part does not exist). The child leaves the world
+    /// simulation: update_object skips parented objects.
+    /// </summary>
+    /// <exception cref="ArgumentException">The parent is this object, belongs to another world, or the frame is invalid.</exception>
+    // retail: CPhysicsObj::set_parent (acclient.c:323002), simplified: no shadow cells
+    public bool SetParent(PhysicsObj parent, uint partIndex, in Frame frame)
+    {
+        ArgumentNullException.ThrowIfNull(parent);
+        if (parent == this || parent.World != World || !frame.IsValid())
+        {
+            throw new ArgumentException("Invalid parent or frame.", nameof(parent));
+        }
+
+        parent.Children ??= new ChildList();
+        if (parent.Children.IndexOf(this) >= 0)
+        {
+            return false;
+        }
+
+        parent.Children.Add(this, partIndex, frame);
+        UnsetParent();
+        LeaveCell();
+        _transientState &= ~TransientState.Active;
+        Parent = parent;
+        if (parent.CellId != 0)
+        {
+            ChangeCell(parent.CellId);
+            parent.UpdateChild(this, partIndex, frame);
+        }
+
+        return true;
+    }
+
+    /// <summary>Detaches this object from its parent; its clock restarts and its transient state is cleared.</summary>
+    // retail: CPhysicsObj::unset_parent (acclient.c:320479), simplified
+    public void UnsetParent()
+    {
+        PhysicsObj? parent = Parent;
+        if (parent is null)
+        {
+            return;
+        }
+
+        parent.Children?.Remove(this);
+        Parent = null;
+        UpdateTime = World.CurrentTime;
+        ClearTransientStates();
+    }
+
+    // retail: CPhysicsObj::UpdateChildrenInternal (acclient.c:321121)
+    private void UpdateChildrenInternal()
+    {
+        ChildList? children = Children;
+        if (PartArray is null || children is null)
+        {
+            return;
+        }
+
+        for (int i = 0; i < children.Count; i++)
+        {
+            UpdateChild(children.GetObject(i), children.GetPartNumber(i), children.GetFrame(i));
+        }
+    }
+
+    // retail: CPhysicsObj::UpdateChild (acclient.c:320038)
+    private void UpdateChild(PhysicsObj child, uint partIndex, in Frame childFrame)
+    {
+        IPartArray? parts = PartArray;
+        Frame basis = parts is not null && partIndex < (uint)parts.NumParts ? parts.GetPartFrame((int)partIndex) : _position.Frame;
+        Frame f = basis;
+        f.Combine(basis, childFrame);
+        child.SetFrame(f);
+        child.ParticleManager?.UpdateParticles();
+        child.ScriptManager?.UpdateScripts();
+    }
+
+    // retail: CPhysicsObj::change_cell (acclient.c:320421)
+    private void ChangeCell(uint newCellId)
+    {
+        if (CellId != 0)
+        {
+            LeaveCell();
+        }
+
+        if (newCellId != 0)
+        {
+            EnterCell(newCellId);
+        }
+        else
+        {
+            _position.ObjCellId = 0;
+            if ((_state & PhysicsState.ParticleEmitter) == 0)
+            {
+                PartArray?.SetCellId(0);
+            }
+
+            CellId = 0;
+        }
+    }
+
+    // retail: CPhysicsObj::enter_cell (acclient.c:318201): nothing happens for an object without a part array.
+    private void EnterCell(uint cellId)
+    {
+        if (PartArray is null)
+        {
+            return;
+        }
+
+        ChildList? children = Children;
+        if (children is not null)
+        {
+            for (int i = 0; i < children.Count; i++)
+            {
+                children.GetObject(i).EnterCell(cellId);
+            }
+        }
+
+        _position.ObjCellId = cellId;
+        if ((_state & PhysicsState.ParticleEmitter) == 0)
+        {
+            PartArray.SetCellId(cellId);
+        }
+
+        CellId = cellId;
+    }
+
+    // retail: CPhysicsObj::leave_cell (acclient.c:318243)
+    private void LeaveCell()
+    {
+        if (CellId == 0)
+        {
+            return;
+        }
+
+        ChildList? children = Children;
+        if (children is not null)
+        {
+            for (int i = 0; i < children.Count; i++)
+            {
+                children.GetObject(i).LeaveCell();
+            }
+        }
+
+        CellId = 0;
+    }
+
+    private void SetChildrenCellId(uint id)
+    {
+        ChildList? children = Children;
+        if (children is null)
+        {
+            return;
+        }
+
+        for (int i = 0; i < children.Count; i++)
+        {
+            PhysicsObj c = children.GetObject(i);
+            c._position.ObjCellId = id;
+            if ((c._state & PhysicsState.ParticleEmitter) == 0)
+            {
+                c.PartArray?.SetCellId(id);
+            }
+        }
+    }
+}

@@ -1,0 +1,312 @@
+using System;
+
+namespace AcDream.Core.Physics;
+
+public sealed partial class PhysicsObj
+{
+    private IAnimHook?[] _animHooks = Array.Empty<IAnimHook?>();
+    private int _animHookCount;
+
+    /// <summary>Newest hook in the object's list (retail <c>hooks</c>), or null.</summary>
+    public PhysicsObjHook? Hooks { get; private set; }
+
+    /// <summary>Number of anim hooks waiting for the next <c>process_hooks</c>.</summary>
+    public int PendingAnimHookCount => _animHookCount;
+
+    /// <summary>Pushes <paramref name="hook"/> at the head of the hook list: it runs first at the next step.</summary>
+    /// <exception cref="ArgumentException">The hook already belongs to an object.</exception>
+    public void AddHook(PhysicsObjHook hook)
+    {
+        ArgumentNullException.ThrowIfNull(hook);
+        if (hook.Owner is not null)
+        {
+            throw new ArgumentException("The hook already belongs to an object.", nameof(hook));
+        }
+
+        hook.Owner = this;
+        hook.Prev = null;
+        PhysicsObjHook? head = Hooks;
+        if (head is not null)
+        {
+            head.Prev = hook;
+        }
+
+        hook.Next = head;
+        Hooks = hook;
+    }
+
+    /// <summary>Queues a one-shot animation event for the next <c>process_hooks</c> (the bag grows by doubling, from 8).</summary>
+    // retail: CPhysicsObj::add_anim_hook (acclient.c:322062)
+    public void AddAnimHook(IAnimHook hook)
+    {
+        ArgumentNullException.ThrowIfNull(hook);
+        if (_animHookCount == _animHooks.Length)
+        {
+            Array.Resize(ref _animHooks, _animHooks.Length == 0 ? 8 : _animHooks.Length * 2);
+        }
+
+        _animHooks[_animHookCount++] = hook;
+    }
+
+    /// <summary>
+    /// Runs every hook, newest first, removing each one whose Execute reports done; then runs and clears the anim hooks.
+    /// </summary>
+    // retail: CPhysicsObj::process_hooks (acclient.c:318640)
+    internal void ProcessHooks()
+    {
+        PhysicsObjHook? h = Hooks;
+        while (h is not null)
+        {
+            // Read before Execute: a hook added during Execute goes to the head and waits for the next step.
+            PhysicsObjHook? next = h.Next;
+            if (h.Execute(this))
+            {
+                UnlinkHook(h);
+                h.OnRemoved(World);
+            }
+
+            h = next;
+        }
+
+        if (_animHookCount > 0)
+        {
+            for (int i = 0; i < _animHookCount; i++)
+            {
+                _animHooks[i]!.Execute(this);
+            }
+
+            // Retail shrinks the array to its count, then empties it; we keep the capacity so the tick does not allocate.
+            Array.Clear(_animHooks, 0, _animHookCount);
+            _animHookCount = 0;
+        }
+    }
+
+    /// <summary>Applies one interpolated hook value to the object or its parts.</summary>
+    // retail: CPhysicsObj::process_fp_hook (acclient.c:320571)
+    public void ProcessFPHook(PhysicsHookType type, float value, uint userData)
+    {
+        switch (type)
+        {
+            case PhysicsHookType.Scale:
+                SetScaleStatic(value);
+                break;
+            case PhysicsHookType.Translucency:
+                SetTranslucencyInternal(value);
+                break;
+            case PhysicsHookType.PartTranslucency:
+                PartArray?.SetPartTranslucency(userData, value);
+                break;
+            case PhysicsHookType.Luminosity:
+                PartArray?.SetLuminosity(value);
+                break;
+            case PhysicsHookType.PartLuminosity:
+                PartArray?.SetPartLuminosity(userData, value);
+                break;
+            case PhysicsHookType.Diffusion:
+                PartArray?.SetDiffusion(value);
+                break;
+            case PhysicsHookType.PartDiffusion:
+                PartArray?.SetPartDiffusion(userData, value);
+                break;
+            case PhysicsHookType.CallPes:
+                CallPesInternal(userData, value);
+                break;
+            default:
+                break;
+        }
+    }
+
+    /// <summary>Scales the object to <paramref name="scale"/> now, or over <paramref name="delta"/> seconds of physics clock
+    /// when delta &gt;= EPSILON.</summary>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    // retail: CPhysicsObj::SetScale (acclient.c:320621)
+    public void SetScale(float scale, double delta)
+    {
+        ThrowIfNotFinite(scale, delta);
+        if (delta >= PhysicsGlobals.Epsilon)
+        {
+            AddFPHook(PhysicsHookType.Scale, delta, Scale, scale, 0);
+        }
+        else
+        {
+            SetScaleStatic(scale);
+        }
+    }
+
+    /// <summary>Sets the scale at once (retail <c>SetScaleStatic</c>).</summary>
+    // retail: CPhysicsObj::SetScaleStatic (acclient.c:319007)
+    public void SetScaleStatic(float scale)
+    {
+        Scale = scale;
+        PartArray?.SetScale(scale);
+    }
+
+    /// <summary>Fades the translucency from 0 to <paramref name="translucency"/> over <paramref name="delta"/> seconds (retail
+    /// starts every such fade at 0), or sets it at once when delta &lt; EPSILON.</summary>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    // retail: CPhysicsObj::SetTranslucency (acclient.c:318693)
+    public void SetTranslucency(float translucency, double delta)
+    {
+        ThrowIfNotFinite(translucency, delta);
+        if (delta >= PhysicsGlobals.Epsilon)
+        {
+            AddFPHook(PhysicsHookType.Translucency, delta, 0.0f, translucency, 0);
+        }
+        else
+        {
+            SetTranslucencyInternal(translucency);
+        }
+    }
+
+    /// <summary>Fades the translucency from <paramref name="start"/> to <paramref name="end"/> over <paramref name="delta"/> seconds.</summary>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    // retail: CPhysicsObj::SetTranslucency2 (acclient.c:316920)
+    public void SetTranslucency2(float start, float end, double delta)
+    {
+        ThrowIfNotFinite(start, delta);
+        ThrowIfNotFinite(end, delta);
+        if (delta >= PhysicsGlobals.Epsilon)
+        {
+            AddFPHook(PhysicsHookType.Translucency, delta, start, end, 0);
+        }
+        else
+        {
+            SetTranslucencyInternal(end);
+        }
+    }
+
+    /// <summary>Sets the translucency at once, never below <see cref="TranslucencyOriginal"/>.</summary>
+    // retail: CPhysicsObj::SetTranslucencyInternal (acclient.c:316802)
+    public void SetTranslucencyInternal(float translucency)
+    {
+        float t = translucency < (double)_translucencyOriginal ? _translucencyOriginal : translucency;
+        Translucency = t;
+        PartArray?.SetTranslucency(t);
+    }
+
+    /// <summary>Fades one part's translucency (or sets it at once when delta &lt; EPSILON).</summary>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    // retail: CPhysicsObj::SetPartTranslucency (acclient.c:318758)
+    public void SetPartTranslucency(uint part, float start, float end, double delta) =>
+        FadeOrSet(PhysicsHookType.PartTranslucency, part, start, end, delta);
+
+    /// <summary>Fades the luminosity (or sets it at once when delta &lt; EPSILON).</summary>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    // retail: CPhysicsObj::SetLuminosity (acclient.c:318826)
+    public void SetLuminosity(float start, float end, double delta) =>
+        FadeOrSet(PhysicsHookType.Luminosity, 0, start, end, delta);
+
+    /// <summary>Fades one part's luminosity (or sets it at once when delta &lt; EPSILON).</summary>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    // retail: CPhysicsObj::SetPartLuminosity (acclient.c:318792)
+    public void SetPartLuminosity(uint part, float start, float end, double delta) =>
+        FadeOrSet(PhysicsHookType.PartLuminosity, part, start, end, delta);
+
+    /// <summary>Fades the diffusion (or sets it at once when delta &lt; EPSILON).</summary>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    // retail: CPhysicsObj::SetDiffusion (acclient.c:318894)
+    public void SetDiffusion(float start, float end, double delta) =>
+        FadeOrSet(PhysicsHookType.Diffusion, 0, start, end, delta);
+
+    /// <summary>Fades one part's diffusion (or sets it at once when delta &lt; EPSILON).</summary>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    // retail: CPhysicsObj::SetPartDiffusion (acclient.c:318860)
+    public void SetPartDiffusion(uint part, float start, float end, double delta) =>
+        FadeOrSet(PhysicsHookType.PartDiffusion, part, start, end, delta);
+
+    /// <summary>
+    /// Plays physics script <paramref name="scriptId"/> after a random delay in [0, <paramref name="delta"/>] seconds, or at once
+    /// when delta &lt; EPSILON (only while the object is in a cell).
+    /// </summary>
+    /// <exception cref="ArgumentException"><paramref name="delta"/> is NaN or infinite.</exception>
+    // retail: CPhysicsObj::CallPES (acclient.c:318972)
+    public void CallPes(uint scriptId, double delta)
+    {
+        ThrowIfNotFinite(0f, delta);
+        if (delta >= PhysicsGlobals.Epsilon)
+        {
+            float upper = (float)delta;
+            float randomDelay = World.RollDice(0.0f, upper);
+            AddFPHook(PhysicsHookType.CallPes, randomDelay, 0.0f, 1.0f, scriptId);
+        }
+        else if (CellId != 0)
+        {
+            World.ScriptPlayer?.PlayScript(this, scriptId);
+        }
+    }
+
+    // retail: CPhysicsObj::CallPESInternal (acclient.c:318962)
+    private void CallPesInternal(uint scriptId, float value)
+    {
+        if (value >= 1.0f && CellId != 0)
+        {
+            World.ScriptPlayer?.PlayScript(this, scriptId);
+        }
+    }
+
+    private void FadeOrSet(PhysicsHookType type, uint part, float start, float end, double delta)
+    {
+        ThrowIfNotFinite(start, delta);
+        ThrowIfNotFinite(end, delta);
+        if (delta >= PhysicsGlobals.Epsilon)
+        {
+            AddFPHook(type, delta, start, end, part);
+        }
+        else
+        {
+            ProcessFPHook(type, end, part);
+        }
+    }
+
+    private void AddFPHook(PhysicsHookType type, double delta, float start, float end, uint userData)
+    {
+        FPHook hook = World.RentFPHook(type, World.PhysicsTime, delta, start, end, userData);
+        AddHook(hook);
+    }
+
+    private void UnlinkHook(PhysicsObjHook h)
+    {
+        PhysicsObjHook? next = h.Next;
+        PhysicsObjHook? prev = h.Prev;
+        if (next is not null)
+        {
+            next.Prev = prev;
+        }
+
+        if (prev is not null)
+        {
+            prev.Next = next;
+        }
+        else
+        {
+            Hooks = next;
+        }
+
+        h.Prev = null;
+        h.Next = null;
+        h.Owner = null;
+    }
+
+    internal void ClearHooksOnRemove()
+    {
+        PhysicsObjHook? h = Hooks;
+        while (h is not null)
+        {
+            PhysicsObjHook? next = h.Next;
+            UnlinkHook(h);
+            h.OnRemoved(World);
+            h = next;
+        }
+
+        Array.Clear(_animHooks, 0, _animHookCount);
+        _animHookCount = 0;
+    }
+
+    private static void ThrowIfNotFinite(float value, double delta)
+    {
+        if (!float.IsFinite(value) || !double.IsFinite(delta))
+        {
+            throw new ArgumentException("Hook values and durations must be finite.");
+        }
+    }
+}

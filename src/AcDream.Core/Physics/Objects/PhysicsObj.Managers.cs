@@ -1,0 +1,136 @@
+namespace AcDream.Core.Physics;
+
+public sealed partial class PhysicsObj
+{
+    /// <summary>Creates the position manager if absent and activates a non-static object (retail <c>MakePositionManager</c>).</summary>
+    /// <returns>The position manager.</returns>
+    // retail: CPhysicsObj::MakePositionManager (acclient.c:317430)
+    public PositionManager MakePositionManager()
+    {
+        PositionManager ??= new PositionManager(this);
+        ActivateIfNotStatic();
+        return PositionManager;
+    }
+
+    /// <summary>
+    /// The motion interpreter, creating a movement manager first when the object has none (retail <c>get_minterp</c>:
+    /// <c>MovementManager::Create</c> + <c>EnterDefaultState</c>, then activation). The world's
+    /// <see cref="PhysicsWorld.MovementManagerFactory"/> creates it, or a <see cref="BasicMovementManager"/> when unset.
+    /// </summary>
+    // retail: CPhysicsObj::get_minterp (acclient.c:319279)
+    public IMotionInterpreter? GetMinterp()
+    {
+        if (MovementManager is null)
+        {
+            MovementManager = World.MovementManagerFactory?.Create(this) ?? new BasicMovementManager();
+            ActivateIfNotStatic();
+        }
+
+        return MovementManager.MotionInterpreter;
+    }
+
+    /// <summary>True while the movement manager runs a move-to.</summary>
+    // retail: CPhysicsObj::IsMovingTo (acclient.c:315821)
+    public bool IsMovingTo() => MovementManager is not null && MovementManager.IsMovingTo();
+
+    /// <summary>Queues an interpolation towards <paramref name="p"/> (creating the position manager).</summary>
+    /// <exception cref="System.ArgumentException">The frame is not valid.</exception>
+    // retail: CPhysicsObj::InterpolateTo (acclient.c:317580)
+    public void InterpolateTo(in Position p, bool keepHeading)
+    {
+        if (!p.Frame.IsValid())
+        {
+            throw new System.ArgumentException("Position frame must be valid.", nameof(p));
+        }
+
+        MakePositionManager().InterpolateTo(p, keepHeading);
+    }
+
+    /// <summary>Stops interpolating.</summary>
+    // retail: CPhysicsObj::StopInterpolating (acclient.c:315836)
+    public void StopInterpolating() => PositionManager?.StopInterpolating();
+
+    /// <summary>True while interpolation nodes are queued.</summary>
+    // retail: CPhysicsObj::IsInterpolating (acclient.c:315846)
+    public bool IsInterpolating() => PositionManager is not null && PositionManager.IsInterpolating();
+
+    /// <summary>Constrains the object near <paramref name="p"/> (creating the position manager).</summary>
+    /// <exception cref="System.ArgumentException">The frame is not valid.</exception>
+    // retail: CPhysicsObj::ConstrainTo (acclient.c:317590)
+    public void ConstrainTo(in Position p, float startDistance, float maxDistance)
+    {
+        if (!p.Frame.IsValid())
+        {
+            throw new System.ArgumentException("Position frame must be valid.", nameof(p));
+        }
+
+        MakePositionManager().ConstrainTo(p, startDistance, maxDistance);
+    }
+
+    /// <summary>True when the constraint manager holds the object fully.</summary>
+    // retail: CPhysicsObj::IsFullyConstrained (acclient.c:315932)
+    public bool IsFullyConstrained() => PositionManager is not null && PositionManager.IsFullyConstrained();
+
+    /// <summary>Id of the object this one sticks to, or 0.</summary>
+    // retail: CPhysicsObj::get_sticky_object_id (acclient.c:315807)
+    public uint GetStickyObjectId() => PositionManager?.GetStickyObjectId() ?? 0u;
+
+    /// <summary>Stops sticking to an object.</summary>
+    // retail: CPhysicsObj::unstick_from_object (acclient.c:315797)
+    public void UnstickFromObject() => PositionManager?.UnStick();
+
+    /// <summary>True when the object is the world's player.</summary>
+    public bool IsPlayer => World.Player == this;
+
+    /// <summary>Distance beyond which an interpolating object blips, metres: player 25 indoors / 100 outdoors, others 20 / 100.</summary>
+    // retail: CPhysicsObj::GetAutonomyBlipDistance (acclient.c:315860)
+    public double GetAutonomyBlipDistance()
+    {
+        bool indoor = (_position.ObjCellId & 0xFFFFu) >= 0x100u;
+        if (IsPlayer)
+        {
+            return indoor ? 25.0 : 100.0;
+        }
+
+        return indoor ? 20.0 : 100.0;
+    }
+
+    /// <summary>Distance at which a constraint starts to act, metres: 5 indoors / 10 outdoors.</summary>
+    // retail: CPhysicsObj::GetStartConstraintDistance (acclient.c:315884)
+    public double GetStartConstraintDistance() => (_position.ObjCellId & 0xFFFFu) >= 0x100u ? 5.0 : 10.0;
+
+    /// <summary>Distance at which a constraint holds fully, metres: 20 indoors / 50 outdoors.</summary>
+    // retail: CPhysicsObj::GetMaxConstraintDistance (acclient.c:315908)
+    public double GetMaxConstraintDistance() => (_position.ObjCellId & 0xFFFFu) >= 0x100u ? 20.0 : 50.0;
+
+    /// <summary>Bounding radius, metres (0 without a part array).</summary>
+    // retail: CPhysicsObj::GetRadius (acclient.c:315672)
+    public double GetRadius() => PartArray is not null ? PartArray.Radius : 0.0;
+
+    /// <summary>Height, metres (0 without a part array).</summary>
+    // retail: CPhysicsObj::GetHeight (acclient.c:315686)
+    public double GetHeight() => PartArray is not null ? PartArray.Height : 0.0;
+
+    /// <summary>Step-up height, metres (0 without a part array).</summary>
+    // retail: CPhysicsObj::GetStepUpHeight (acclient.c:315700)
+    public double GetStepUpHeight() => PartArray is not null ? PartArray.StepUpHeight : 0.0;
+
+    /// <summary>Step-down height, metres (0 without a part array).</summary>
+    // retail: CPhysicsObj::GetStepDownHeight (acclient.c:315714)
+    public double GetStepDownHeight() => PartArray is not null ? PartArray.StepDownHeight : 0.0;
+
+    private void ActivateIfNotStatic()
+    {
+        if ((_state & PhysicsState.Static) != 0)
+        {
+            return;
+        }
+
+        if ((_transientState & TransientState.Active) == 0)
+        {
+            UpdateTime = World.CurrentTime;
+        }
+
+        _transientState |= TransientState.Active;
+    }
+}

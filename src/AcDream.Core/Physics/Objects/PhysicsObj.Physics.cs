@@ -1,0 +1,306 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+public sealed partial class PhysicsObj
+{
+    /// <summary>cos(10 degrees) as retail evaluates it in calc_friction: <c>cos(0.1745329251994329)</c>, a double.</summary>
+    internal static readonly double SleddingSteepCos = System.Math.Cos(0.1745329251994329);
+
+    /// <summary>
+    /// Integrates one step into <paramref name="frame"/>: the 50 m/s clamp, friction, the small-velocity stop, the origin
+    /// update (v·dt + ½·a·dt²), the velocity update and the rotation by omega·dt. An object at rest on walkable ground with no
+    /// movement manager deactivates itself.
+    /// </summary>
+    // retail: CPhysicsObj::UpdatePhysicsInternal (acclient.c:317700)
+    internal void UpdatePhysicsInternal(float quantum, ref Frame frame)
+    {
+        double q = quantum;
+        Vector3 v = _velocity;
+        float mag2 = (float)((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
+        if (mag2 <= 0.0f)
+        {
+            if (MovementManager is null && (_transientState & TransientState.OnWalkable) != 0)
+            {
+                _transientState &= ~TransientState.Active;
+            }
+        }
+        else
+        {
+            if ((double)mag2 > PhysicsGlobals.MaxVelocitySquared)
+            {
+                v = VectorMath.Normalize(v);
+                mag2 = PhysicsGlobals.MaxVelocitySquared;
+                v = new Vector3(
+                    (float)(50.0 * v.X),
+                    (float)(50.0 * v.Y),
+                    (float)(50.0 * v.Z));
+                _velocity = v;
+            }
+
+            CalcFriction(quantum, mag2);
+            if ((double)mag2 - 0.25 * 0.25 < PhysicsGlobals.Epsilon)
+            {
+                _velocity = Vector3.Zero;
+            }
+
+            v = _velocity;
+            Vector3 a = _acceleration;
+            Vector3 o = frame.Origin;
+
+            // The float roundings below are retail's x87 spills to 4-byte stack slots (Hex-Rays STxx_4 temporaries).
+            float halfAxQ = (float)(a.X * 0.5 * q);
+            float halfAxQQ = (float)(halfAxQ * q);
+            float halfAyQQ = (float)(a.Y * 0.5 * q * q);
+            float halfAz = (float)(a.Z * 0.5);
+            float qVz = (float)(q * v.Z);
+            float dx = (float)(q * v.X + halfAxQQ);
+            float dz = (float)(qVz + halfAz * q * q);
+            float ox = (float)(dx + (double)o.X);
+            float oy = (float)(q * v.Y + halfAyQQ + o.Y);
+            float oz = (float)(dz + (double)o.Z);
+            frame.Origin = new Vector3(ox, oy, oz);
+        }
+
+        Vector3 acc = _acceleration;
+        Vector3 vel = _velocity;
+        _velocity = new Vector3(
+            (float)(q * acc.X + vel.X),
+            (float)(q * acc.Y + vel.Y),
+            (float)(q * acc.Z + vel.Z));
+        Vector3 w = _omega;
+        frame.GRotate(new Vector3((float)(q * w.X), (float)(q * w.Y), (float)(q * w.Z)));
+    }
+
+    /// <summary>
+    /// Sets the acceleration from the contact state: zero (and zero omega) when resting on walkable ground and not sledding,
+    /// gravity when the GRAVITY bit is set, otherwise zero.
+    /// </summary>
+    // retail: CPhysicsObj::calc_acceleration (acclient.c:317786)
+    public void CalcAcceleration()
+    {
+        TransientState ts = _transientState;
+        if ((ts & TransientState.Contact) != 0 && (ts & TransientState.OnWalkable) != 0 && (_state & PhysicsState.Sledding) == 0)
+        {
+            _acceleration = Vector3.Zero;
+            _omega = Vector3.Zero;
+        }
+        else if ((_state & PhysicsState.Gravity) != 0)
+        {
+            _acceleration = new Vector3(0f, 0f, PhysicsGlobals.Gravity);
+        }
+        else
+        {
+            _acceleration = Vector3.Zero;
+        }
+    }
+
+    /// <summary>
+    /// Ground friction for one step: on walkable ground, unless the velocity points away from the contact plane (v·N &gt;= 0.25),
+    /// removes the normal component and scales the velocity by (1 - f)^quantum; sledding uses 0.2, the object's friction or a
+    /// full stop depending on speed and slope.
+    /// </summary>
+    // retail: CPhysicsObj::calc_friction (acclient.c:316090)
+    internal void CalcFriction(float quantum, float velocityMag2)
+    {
+        if ((_transientState & TransientState.OnWalkable) == 0)
+        {
+            return;
+        }
+
+        Vector3 v = _velocity;
+        Vector3 n = ContactPlaneNormal;
+        double f;
+        if ((_state & PhysicsState.Sledding) != 0)
+        {
+            double d = (double)v.Z * n.Z + (double)v.Y * n.Y + (double)v.X * n.X;
+            if (d >= 0.25)
+            {
+                return;
+            }
+
+            float frict = 0.2f;
+            v = new Vector3((float)(v.X - d * n.X), (float)(v.Y - d * n.Y), (float)(v.Z - (double)(float)(d * n.Z)));
+            if (velocityMag2 >= 1.5625f)
+            {
+                if (velocityMag2 < 6.25f || SleddingSteepCos <= n.Z)
+                {
+                    frict = _friction;
+                }
+
+                f = frict;
+            }
+            else
+            {
+                f = 1.0;
+            }
+        }
+        else
+        {
+            double d = (double)n.Z * v.Z + (double)n.Y * v.Y + (double)n.X * v.X;
+            if (d >= 0.25)
+            {
+                return;
+            }
+
+            v = new Vector3((float)(v.X - d * n.X), (float)(v.Y - d * n.Y), (float)(v.Z - (double)(float)(d * n.Z)));
+            f = _friction;
+        }
+
+        double k = System.Math.Pow(1.0 - f, quantum);
+        _velocity = new Vector3((float)(k * v.X), (float)(k * v.Y), (float)(k * v.Z));
+    }
+
+    /// <summary>
+    /// Sets the velocity (clamped to 50 m/s; marks <see cref="JumpedThisFrame"/> when it changes) and activates a non-static
+    /// object, restarting its clock if it was inactive.
+    /// </summary>
+    /// <exception cref="System.ArgumentException">A component is NaN or infinite (state unchanged).</exception>
+    // retail: CPhysicsObj::set_velocity (acclient.c:318577)
+    public void SetVelocity(Vector3 velocity)
+    {
+        ThrowIfNotFinite(velocity, nameof(velocity));
+        if (velocity != _velocity)
+        {
+            Vector3 v = velocity;
+            if ((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z > PhysicsGlobals.MaxVelocitySquared)
+            {
+                v = VectorMath.Normalize(v);
+                v = new Vector3((float)(50.0 * v.X), (float)(50.0 * v.Y), (float)(50.0 * v.Z));
+            }
+
+            _velocity = v;
+            JumpedThisFrame = true;
+        }
+
+        if ((_state & PhysicsState.Static) == 0)
+        {
+            if ((_transientState & TransientState.Active) == 0)
+            {
+                UpdateTime = World.CurrentTime;
+            }
+
+            _transientState |= TransientState.Active;
+        }
+    }
+
+    /// <summary>Sets the velocity from local axes (rotated to world axes by the object's frame), then <see cref="SetVelocity"/>.</summary>
+    /// <exception cref="System.ArgumentException">A component is NaN or infinite.</exception>
+    // retail: CPhysicsObj::set_local_velocity (acclient.c:318617)
+    public void SetLocalVelocity(Vector3 localVelocity)
+    {
+        ThrowIfNotFinite(localVelocity, nameof(localVelocity));
+        SetVelocity(_position.Frame.LocalToGlobalVec(localVelocity));
+    }
+
+    /// <summary>Sets the angular velocity, rad/s in world axes (a plain store, as retail).</summary>
+    /// <exception cref="System.ArgumentException">A component is NaN or infinite.</exception>
+    // retail: CPhysicsObj::set_omega (acclient.c:316612)
+    public void SetOmega(Vector3 omega)
+    {
+        ThrowIfNotFinite(omega, nameof(omega));
+        _omega = omega;
+    }
+
+    /// <summary>
+    /// Activates (restarting the clock of an inactive object; refused for a STATIC object) or deactivates the object.
+    /// </summary>
+    /// <returns>False only when activation was refused.</returns>
+    // retail: CPhysicsObj::set_active (acclient.c:316979)
+    public bool SetActive(bool active)
+    {
+        if (active)
+        {
+            if ((_state & PhysicsState.Static) != 0)
+            {
+                return false;
+            }
+
+            if ((_transientState & TransientState.Active) == 0)
+            {
+                UpdateTime = World.CurrentTime;
+            }
+
+            _transientState |= TransientState.Active;
+            return true;
+        }
+
+        _transientState &= ~TransientState.Active;
+        return true;
+    }
+
+    /// <summary>Sets or clears ON_WALKABLE, telling the movement manager on a change, then recomputes the acceleration.</summary>
+    // retail: CPhysicsObj::set_on_walkable (acclient.c:318501)
+    public void SetOnWalkable(bool onWalkable)
+    {
+        bool was = (_transientState & TransientState.OnWalkable) != 0;
+        if (onWalkable)
+        {
+            _transientState |= TransientState.OnWalkable;
+        }
+        else
+        {
+            _transientState &= ~TransientState.OnWalkable;
+        }
+
+        if (was)
+        {
+            if (!onWalkable && MovementManager is not null)
+            {
+                MovementManager.LeaveGround();
+            }
+        }
+        else if (onWalkable)
+        {
+            MovementManager?.HitGround();
+        }
+
+        CalcAcceleration();
+    }
+
+    /// <summary>Clears contact, walkable, sliding, water, the stationary bits and ACTIVE (retail <c>clear_transient_states</c>).</summary>
+    // retail: CPhysicsObj::clear_transient_states (acclient.c:319024)
+    public void ClearTransientStates()
+    {
+        _transientState &= ~TransientState.Contact;
+        CalcAcceleration();
+        bool wasOnWalkable = (_transientState & TransientState.OnWalkable) != 0;
+        _transientState &= ~(TransientState.OnWalkable | TransientState.WaterContact);
+        if (wasOnWalkable)
+        {
+            MovementManager?.LeaveGround();
+        }
+
+        CalcAcceleration();
+        // 0xFFFFFE0B: SLIDING, the three STATIONARY bits, ACTIVE and CHECK_ETHEREAL.
+        _transientState &= ~(TransientState.Sliding | TransientState.StationaryFall | TransientState.StationaryStop
+                             | TransientState.StationaryStuck | TransientState.Active | TransientState.CheckEthereal);
+    }
+
+    /// <summary>
+    /// Makes the object ethereal, or tries to make it solid: when it would overlap something (asked through the world's
+    /// <see cref="TransitionSeam"/>) it stays ethereal and CHECK_ETHEREAL is set so the next step retries.
+    /// </summary>
+    /// <returns>True when the request took effect now.</returns>
+    // retail: CPhysicsObj::set_ethereal (acclient.c:319046)
+    public bool SetEthereal(bool ethereal)
+    {
+        if (ethereal)
+        {
+            _state |= PhysicsState.Ethereal;
+            _transientState &= ~TransientState.CheckEthereal;
+            return true;
+        }
+
+        _state &= ~PhysicsState.Ethereal;
+        if (Parent is not null || CellId == 0 || !World.Transition.EtherealCheckForCollisions(this))
+        {
+            _transientState &= ~TransientState.CheckEthereal;
+            return true;
+        }
+
+        _state |= PhysicsState.Ethereal;
+        _transientState |= TransientState.CheckEthereal;
+        return false;
+    }
+}

@@ -1,0 +1,247 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+public sealed partial class PhysicsObj
+{
+    /// <summary>
+    /// Stores <paramref name="frame"/> as the object's frame without any collision test, places the parts and moves the
+    /// attached children. A frame whose origin is finite but whose quaternion has a NaN gets an all-zero quaternion, as retail.
+    /// </summary>
+    // retail: CPhysicsObj::set_frame (acclient.c:321327)
+    public void SetFrame(in Frame frame)
+    {
+        Frame f = frame;
+        if (!f.IsValid() && f.IsValidExceptForHeading())
+        {
+            f.SetQuaternionRaw(0f, 0f, 0f, 0f);
+        }
+
+        _position.Frame = f;
+        if ((_state & PhysicsState.ParticleEmitter) == 0)
+        {
+            PartArray?.SetFrame(_position.Frame);
+        }
+
+        UpdateChildrenInternal();
+    }
+
+    /// <summary>Stores a frame with no validity repair (retail <c>set_initial_frame</c>).</summary>
+    // retail: CPhysicsObj::set_initial_frame (acclient.c:321355)
+    public void SetInitialFrame(in Frame frame)
+    {
+        _position.Frame = frame;
+        if ((_state & PhysicsState.ParticleEmitter) == 0)
+        {
+            PartArray?.SetFrame(_position.Frame);
+        }
+
+        UpdateChildrenInternal();
+    }
+
+    /// <summary>Turns the object to face <paramref name="degrees"/> (clockwise from north), keeping its origin.</summary>
+    /// <exception cref="ArgumentException">The heading is NaN or infinite.</exception>
+    // retail: CPhysicsObj::set_heading (acclient.c:321376)
+    public void SetHeading(float degrees)
+    {
+        if (!float.IsFinite(degrees))
+        {
+            throw new ArgumentException("Heading must be finite.", nameof(degrees));
+        }
+
+        Frame f = _position.Frame;
+        f.SetHeading(degrees);
+        SetFrame(f);
+    }
+
+    /// <summary>Writes a position without a cell change or collision test (outdoor ids are re-homed to the cell under the
+    /// origin first).</summary>
+    // retail: CPhysicsObj::store_position (acclient.c:321388)
+    public void StorePosition(in Position p)
+    {
+        Position np = p;
+        if ((np.ObjCellId & 0xFFFFu) < 0x100u)
+        {
+            LandDefs.AdjustToOutside(ref np.ObjCellId, ref np.Frame.Origin);
+        }
+
+        _position.ObjCellId = np.ObjCellId;
+        if ((_state & PhysicsState.ParticleEmitter) == 0)
+        {
+            PartArray?.SetCellId(np.ObjCellId);
+        }
+
+        SetFrame(np.Frame);
+    }
+
+    /// <summary>
+    /// Places the object at <paramref name="p"/> through the world's <see cref="TransitionSeam"/> with the flags retail uses for a
+    /// simple move: PLACEMENT-free teleport with a position event, plus SLIDE when <paramref name="sliding"/>.
+    /// </summary>
+    /// <exception cref="ArgumentException">The frame is not valid (NaN, non-unit quaternion); state unchanged.</exception>
+    // retail: CPhysicsObj::SetPositionSimple (acclient.c:323420)
+    public SetPositionError SetPositionSimple(in Position p, bool sliding)
+    {
+        SetPositionFlags flags = SetPositionFlags.Teleport | SetPositionFlags.SendPositionEvent;
+        if (sliding)
+        {
+            flags |= SetPositionFlags.Slide;
+        }
+
+        return SetPosition(p, flags);
+    }
+
+    /// <summary>Places the object at <paramref name="p"/> through the world's <see cref="TransitionSeam"/>.</summary>
+    /// <exception cref="ArgumentException">The frame is not valid (NaN, non-unit quaternion); state unchanged.</exception>
+    // retail: CPhysicsObj::SetPosition (acclient.c:323289)
+    public SetPositionError SetPosition(in Position p, SetPositionFlags flags)
+    {
+        if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
+        {
+            throw new ArgumentException("Position frame must be valid.", nameof(p));
+        }
+
+        return World.Transition.SetPosition(this, p, flags);
+    }
+
+    /// <summary>
+    /// Enters the world at <paramref name="p"/>: stores the position, restarts the clock, places the object with SLIDE and,
+    /// on success, activates it and tells the part array and movement manager.
+    /// </summary>
+    /// <returns>False when the object has a parent or could not be placed.</returns>
+    /// <exception cref="ArgumentException">The frame is not valid; state unchanged.</exception>
+    // retail: CPhysicsObj::enter_world(Position*) (acclient.c:323440) -> enter_world(slide) (acclient.c:323345)
+    public bool EnterWorld(in Position p)
+    {
+        if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
+        {
+            throw new ArgumentException("Position frame must be valid.", nameof(p));
+        }
+
+        StorePosition(p);
+        if (Parent is not null)
+        {
+            return false;
+        }
+
+        UpdateTime = World.CurrentTime;
+        if (World.Transition.SetPosition(this, _position, SetPositionFlags.Placement | SetPositionFlags.Slide) != SetPositionError.Ok)
+        {
+            return false;
+        }
+
+        if ((_state & PhysicsState.Static) == 0)
+        {
+            if ((_transientState & TransientState.Active) == 0)
+            {
+                UpdateTime = World.CurrentTime;
+            }
+
+            _transientState |= TransientState.Active;
+        }
+
+        PartArray?.HandleEnterWorld();
+        MovementManager?.HandleEnterWorld();
+        return true;
+    }
+
+    /// <summary>
+    /// Commits a successful sweep or placement: cell, frame, contact plane, CONTACT / WATER_CONTACT / ON_WALKABLE / SLIDING,
+    /// acceleration, then the collision reports and cell shadows through the world's <see cref="TransitionSeam"/>.
+    /// A result with no cell sends the object to the lost cell.
+    /// </summary>
+    // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
+    public void CommitTransition(in TransitionResult t)
+    {
+        bool prevOnWalkable = (_transientState & TransientState.OnWalkable) != 0;
+        bool prevContact = (_transientState & TransientState.Contact) != 0;
+        if (t.CurrentCellId == 0)
+        {
+            GoToLostCell(t.CurrentPosition);
+            return;
+        }
+
+        if (CellId == t.CurrentCellId)
+        {
+            uint id = t.CurrentPosition.ObjCellId;
+            _position.ObjCellId = id;
+            if ((_state & PhysicsState.ParticleEmitter) == 0)
+            {
+                PartArray?.SetCellId(id);
+            }
+
+            SetChildrenCellId(id);
+        }
+        else
+        {
+            ChangeCell(t.CurrentCellId);
+        }
+
+        SetFrame(t.CurrentPosition.Frame);
+        ContactPlaneCellId = t.ContactPlaneCellId;
+        ContactPlaneNormal = t.ContactPlaneNormal;
+        ContactPlaneD = t.ContactPlaneD;
+        if (t.ContactPlaneValid)
+        {
+            _transientState |= TransientState.Contact;
+        }
+        else
+        {
+            _transientState &= ~TransientState.Contact;
+        }
+
+        CalcAcceleration();
+        if (t.ContactPlaneIsWater)
+        {
+            _transientState |= TransientState.WaterContact;
+        }
+        else
+        {
+            _transientState &= ~TransientState.WaterContact;
+        }
+
+        if ((_transientState & TransientState.Contact) != 0)
+        {
+            SetOnWalkable(!(ContactPlaneNormal.Z < PhysicsGlobals.FloorZ));
+        }
+        else
+        {
+            bool wasOnWalkable = (_transientState & TransientState.OnWalkable) != 0;
+            _transientState &= ~TransientState.OnWalkable;
+            if (wasOnWalkable)
+            {
+                MovementManager?.LeaveGround();
+            }
+
+            CalcAcceleration();
+        }
+
+        SlidingNormal = t.SlidingNormal;
+        if (t.SlidingNormalValid)
+        {
+            _transientState |= TransientState.Sliding;
+        }
+        else
+        {
+            _transientState &= ~TransientState.Sliding;
+        }
+
+        World.Transition.HandleAllCollisions(this, prevContact, prevOnWalkable);
+        if (CellId != 0)
+        {
+            World.Transition.UpdateCellShadows(this);
+        }
+    }
+
+    /// <summary>
+    /// Sends the object out of every cell (retail's lost cell): leaves its cell, stores <paramref name="p"/> and deactivates it.
+    /// </summary>
+    // retail: the lost-cell branch of CPhysicsObj::SetPositionInternal (acclient.c:322503, 323034)
+    public void GoToLostCell(in Position p)
+    {
+        LeaveCell();
+        StorePosition(p);
+        _transientState &= ~TransientState.Active;
+    }
+}

@@ -1,0 +1,256 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+public sealed partial class PhysicsObj
+{
+    private TransitionResult _transitionScratch;
+
+    /// <summary>
+    /// The per-frame update: the bail-outs, the 96 m player gate, then the object's elapsed time cut into steps by the world's
+    /// <see cref="PhysicsProfile"/>. Normally run by <see cref="PhysicsWorld.UseTime"/>; callable directly after
+    /// <see cref="PhysicsWorld.SetCurrentTime"/>.
+    /// </summary>
+    // retail: CPhysicsObj::update_object (acclient.c:323080)
+    public void UpdateObject()
+    {
+        if (Parent is not null || CellId == 0 || (_state & PhysicsState.Frozen) != 0)
+        {
+            _transientState &= ~TransientState.Active;
+            return;
+        }
+
+        PhysicsWorld world = World;
+        PhysicsObj? player = world.Player;
+        if (player is not null)
+        {
+            Vector3 pv = player._position.GetOffset(_position);
+            PlayerVector = pv;
+            double d = System.Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+            PlayerDistance = (float)d;
+            if (d > PhysicsGlobals.PlayerActivityDistance && world.ObjectMaintenanceActive)
+            {
+                _transientState &= ~TransientState.Active;
+            }
+            else
+            {
+                SetActive(true);
+            }
+        }
+
+        double now = world.CurrentTime;
+        double dt = now - UpdateTime;
+        world.PhysicsTime = UpdateTime;
+        PhysicsProfile profile = world.Profile;
+        if (profile.AccumulateBelowMinQuantum)
+        {
+            UpdateObjectAce(world, profile, now, dt);
+            return;
+        }
+
+        if (dt > PhysicsGlobals.Epsilon)
+        {
+            if (dt <= profile.HugeQuantum)
+            {
+                double maxQuantum = profile.MaxQuantum;
+                if (dt > maxQuantum)
+                {
+                    do
+                    {
+                        world.PhysicsTime += maxQuantum;
+                        UpdateObjectInternal((float)maxQuantum);
+                        dt -= maxQuantum;
+                    }
+                    while (dt > maxQuantum);
+
+                    if (dt > profile.MinQuantum)
+                    {
+                        world.PhysicsTime += dt;
+                        UpdateObjectInternal((float)dt);
+                    }
+                }
+                else
+                {
+                    // One whole step, with no MinQuantum test (the founding reference's "nothing at 60 fps" is wrong).
+                    world.PhysicsTime += dt;
+                    UpdateObjectInternal((float)dt);
+                }
+
+                UpdateTime = world.PhysicsTime;
+            }
+            else
+            {
+                UpdateTime = now;
+            }
+        }
+        else
+        {
+            UpdateTime = now;
+        }
+    }
+
+    // ACE's update_object: a dt below 1/30 returns WITHOUT consuming time (it accumulates), 0.1 s slices. Not retail:
+    // selected only by PhysicsProfile.AceCompatible.
+    private void UpdateObjectAce(PhysicsWorld world, PhysicsProfile profile, double now, double dt)
+    {
+        if (dt < profile.MinQuantum)
+        {
+            return;
+        }
+
+        if (dt > profile.HugeQuantum)
+        {
+            UpdateTime = now;
+            return;
+        }
+
+        double maxQuantum = profile.MaxQuantum;
+        while (dt > maxQuantum)
+        {
+            world.PhysicsTime += maxQuantum;
+            UpdateObjectInternal((float)maxQuantum);
+            dt -= maxQuantum;
+        }
+
+        if (dt > profile.MinQuantum)
+        {
+            world.PhysicsTime += dt;
+            UpdateObjectInternal((float)dt);
+        }
+
+        UpdateTime = world.PhysicsTime;
+    }
+
+    /// <summary>One simulation step of <paramref name="quantum"/> seconds (active: move, sweep or set the frame, run the
+    /// managers; inactive: only particles and scripts).</summary>
+    // retail: CPhysicsObj::UpdateObjectInternal (acclient.c:322718)
+    internal void UpdateObjectInternal(float quantum)
+    {
+        World.StepObserver?.OnStep(this, quantum, World.PhysicsTime);
+        if ((_transientState & TransientState.Active) != 0)
+        {
+            if (CellId == 0)
+            {
+                return;
+            }
+
+            if ((_transientState & TransientState.CheckEthereal) != 0)
+            {
+                SetEthereal(false);
+            }
+
+            JumpedThisFrame = false;
+            Position newPos = new(_position.ObjCellId, Frame.Identity);
+            UpdatePositionInternal(quantum, ref newPos.Frame);
+            IPartArray? parts = PartArray;
+            if (parts is not null && parts.NumSpheres != 0)
+            {
+                if (VectorMath.AreEqual(newPos.Frame.Origin, _position.Frame.Origin, PhysicsGlobals.Epsilon))
+                {
+                    newPos.Frame.Origin = _position.Frame.Origin;
+                    SetFrame(newPos.Frame);
+                    CachedVelocity = Vector3.Zero;
+                }
+                else
+                {
+                    if ((_state & PhysicsState.AlignPath) != 0)
+                    {
+                        Vector3 o = newPos.Frame.Origin;
+                        Vector3 p = _position.Frame.Origin;
+                        Vector3 diff = VectorMath.Normalize(new Vector3(o.X - p.X, o.Y - p.Y, o.Z - p.Z));
+                        newPos.Frame.SetVectorHeading(diff);
+                    }
+                    else if ((_state & PhysicsState.Sledding) != 0 && !VectorMath.IsZero(_velocity))
+                    {
+                        newPos.Frame.SetHeading((float)VelocityHeading(_velocity));
+                    }
+
+                    if (World.Transition.FindTransitionalPosition(this, _position, newPos, false, ref _transitionScratch))
+                    {
+                        Vector3 offset = _position.GetOffset(_transitionScratch.CurrentPosition);
+                        CachedVelocity = DivideByQuantum(offset, quantum);
+                        CommitTransition(_transitionScratch);
+                    }
+                    else
+                    {
+                        newPos.Frame.Origin = _position.Frame.Origin;
+                        SetFrame(newPos.Frame);
+                        CachedVelocity = Vector3.Zero;
+                    }
+                }
+            }
+            else
+            {
+                // No collision spheres: retail keeps the origin and takes only the new orientation.
+                if (MovementManager is null && (_transientState & TransientState.OnWalkable) != 0)
+                {
+                    _transientState &= ~TransientState.Active;
+                }
+
+                newPos.Frame.Origin = _position.Frame.Origin;
+                SetFrame(newPos.Frame);
+                CachedVelocity = Vector3.Zero;
+            }
+
+            DetectionManager?.CheckDetection();
+            TargetManager?.HandleTargetting();
+            MovementManager?.UseTime();
+            PartArray?.HandleMovement();
+            PositionManager?.UseTime();
+        }
+
+        ParticleManager?.UpdateParticles();
+        ScriptManager?.UpdateScripts();
+    }
+
+    /// <summary>Builds the step's new frame: root motion, contact scaling, position-manager adjustment, combine, physics,
+    /// then the hooks.</summary>
+    // retail: CPhysicsObj::UpdatePositionInternal (acclient.c:319988)
+    internal void UpdatePositionInternal(float quantum, ref Frame newFrame)
+    {
+        Frame offset = Frame.Identity;
+        if ((_state & PhysicsState.Hidden) == 0)
+        {
+            PartArray?.Update(quantum, ref offset);
+            Vector3 o = offset.Origin;
+            if ((_transientState & TransientState.OnWalkable) != 0)
+            {
+                double s = Scale;
+                offset.Origin = new Vector3((float)(o.X * s), (float)(o.Y * s), (float)(o.Z * s));
+            }
+            else
+            {
+                offset.Origin = new Vector3((float)(o.X * 0.0), (float)(o.Y * 0.0), (float)(o.Z * 0.0));
+            }
+        }
+
+        PositionManager?.AdjustOffset(ref offset, quantum);
+        newFrame.Combine(_position.Frame, offset);
+        if ((_state & PhysicsState.Hidden) == 0)
+        {
+            UpdatePhysicsInternal(quantum, ref newFrame);
+        }
+
+        ProcessHooks();
+    }
+
+    // retail: Vector3::operator/ (acclient.c:146865): x uses the double reciprocal, y and z its float rounding.
+    private static Vector3 DivideByQuantum(Vector3 v, float quantum)
+    {
+        double inv = 1.0 / quantum;
+        float invF = (float)inv;
+        return new Vector3((float)(inv * v.X), (float)((double)invF * v.Y), (float)((double)invF * v.Z));
+    }
+
+    // retail: AC1Legacy::Vector3::get_heading (acclient.c:148166): heading of (x, y, 0), 0 when too small.
+    private static double VelocityHeading(Vector3 v)
+    {
+        Vector3 n = new(v.X, v.Y, 0f);
+        if (VectorMath.NormalizeCheckSmall(ref n))
+        {
+            return 0.0;
+        }
+
+        return HeadingMath.CompassFromAtan2(System.Math.Atan2(n.Y, n.X));
+    }
+}

@@ -1,0 +1,213 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// A simulated object (retail <c>CPhysicsObj</c>, acclient.h:30689; PORTAL/cphysobj/CPhysicsObj.c). It belongs to one
+/// <see cref="PhysicsWorld"/>, which owns the clocks and the player the object reads while it updates.
+/// </summary>
+/// <remarks>
+/// <para>The class is split by concern: state (this file), the tick (<c>PhysicsObj.Tick.cs</c>), physics integration
+/// (<c>PhysicsObj.Physics.cs</c>), placement (<c>PhysicsObj.Position.cs</c>), cells and children
+/// (<c>PhysicsObj.Cells.cs</c>), hooks (<c>PhysicsObj.Hooks.cs</c>) and the manager seams (<c>PhysicsObj.Managers.cs</c>).</para>
+/// <para>Optional managers are null when absent and cost nothing. As in retail, an object enters a cell only when it has a
+/// part array (<c>CPhysicsObj::enter_cell</c>, acclient.c:318201), and update_object does nothing for an object with no cell:
+/// give every simulated object an <see cref="IPartArray"/> (e.g. <see cref="SimplePartArray"/>).</para>
+/// </remarks>
+public sealed partial class PhysicsObj
+{
+    internal Position _position;
+    internal Vector3 _velocity;
+    internal Vector3 _acceleration;
+    internal Vector3 _omega;
+    internal PhysicsState _state;
+    internal TransientState _transientState;
+    private float _friction;
+    private float _elasticity;
+    private float _translucencyOriginal;
+
+    // retail: CPhysicsObj::CPhysicsObj (acclient.c:319489)
+    internal PhysicsObj(PhysicsWorld world, uint id)
+    {
+        World = world;
+        Id = id;
+        PlayerVector = new Vector3(0f, 0f, 1f);
+        PlayerDistance = float.MaxValue;
+        _position = new Position(0, Frame.Identity);
+        _elasticity = PhysicsGlobals.DefaultElasticity;
+        Translucency = PhysicsGlobals.DefaultTranslucency;
+        _translucencyOriginal = PhysicsGlobals.DefaultTranslucency;
+        _friction = PhysicsGlobals.DefaultFriction;
+        _state = (PhysicsState)PhysicsGlobals.DefaultState;
+        MassInv = 1.0f / PhysicsGlobals.DefaultMass;
+        Scale = PhysicsGlobals.DefaultScale;
+    }
+
+    /// <summary>The world that owns the object.</summary>
+    public PhysicsWorld World { get; }
+
+    /// <summary>Index in the world's object list; -1 once removed.</summary>
+    internal int WorldIndex { get; set; }
+
+    /// <summary>The object's id (retail <c>id</c>).</summary>
+    public uint Id { get; }
+
+    /// <summary>Where the object is (retail <c>m_position</c>): cell id and frame.</summary>
+    public Position Position => _position;
+
+    /// <summary>Id of the cell the object is in (retail <c>cell</c>, a pointer); 0 when the object is in no cell.</summary>
+    public uint CellId { get; private set; }
+
+    /// <summary>Persistent state bits (retail <c>state</c>). Default REPORT_COLLISIONS | GRAVITY | LIGHTING_ON | EDGE_SLIDE.</summary>
+    public PhysicsState State => _state;
+
+    /// <summary>Per-frame state bits (retail <c>transient_state</c>).</summary>
+    public TransientState TransientState => _transientState;
+
+    /// <summary>True when the ACTIVE transient bit is set: the object is simulated.</summary>
+    public bool IsActive => (_transientState & TransientState.Active) != 0;
+
+    /// <summary>Velocity in world axes, m/s (retail <c>m_velocityVector</c>). Set with <see cref="SetVelocity"/>.</summary>
+    public Vector3 Velocity => _velocity;
+
+    /// <summary>Acceleration in world axes, m/s² (retail <c>m_accelerationVector</c>), normally set by <see cref="CalcAcceleration"/>.</summary>
+    public Vector3 Acceleration => _acceleration;
+
+    /// <summary>Angular velocity in world axes, rad/s (retail <c>m_omegaVector</c>). Set with <see cref="SetOmega"/>.</summary>
+    public Vector3 Omega => _omega;
+
+    /// <summary>Displacement of the last swept step divided by its duration, m/s (retail <c>cached_velocity</c>);
+    /// zero after a step that did not sweep.</summary>
+    public Vector3 CachedVelocity { get; private set; }
+
+    /// <summary>Client time of the object's last consumed update, seconds (retail <c>update_time</c>).</summary>
+    public double UpdateTime { get; internal set; }
+
+    /// <summary>Offset from the player to this object, metres (retail <c>player_vector</c>; (0, 0, 1) until measured).</summary>
+    public Vector3 PlayerVector { get; private set; }
+
+    /// <summary>Distance to the player, metres (retail <c>player_distance</c>; float.MaxValue until measured).</summary>
+    public float PlayerDistance { get; private set; }
+
+    /// <summary>Friction coefficient in [0, 1] (retail <c>friction</c>, default 0.95): on walkable ground speed decays as (1 - f)^dt.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">The value is NaN or outside [0, 1] (outside, retail's pow would yield NaN or growth).</exception>
+    public float Friction
+    {
+        get => _friction;
+        set
+        {
+            if (!(value >= 0f && value <= 1f))
+            {
+                throw new ArgumentOutOfRangeException(nameof(value), "Friction must be in [0, 1].");
+            }
+
+            _friction = value;
+        }
+    }
+
+    /// <summary>Elasticity (retail <c>elasticity</c>, default 0.05), used by the collision response.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">The value is NaN or infinite.</exception>
+    public float Elasticity
+    {
+        get => _elasticity;
+        set
+        {
+            if (!float.IsFinite(value))
+            {
+                throw new ArgumentOutOfRangeException(nameof(value), "Elasticity must be finite.");
+            }
+
+            _elasticity = value;
+        }
+    }
+
+    /// <summary>Inverse mass, 1/kg (retail <c>massinv</c>, default 1). Retail stores no mass, only its inverse.</summary>
+    public float MassInv { get; private set; }
+
+    /// <summary>Uniform scale (retail <c>m_scale</c>, default 1); scales root motion on walkable ground.</summary>
+    public float Scale { get; private set; }
+
+    /// <summary>Current translucency (retail <c>translucency</c>); never below <see cref="TranslucencyOriginal"/> once set.</summary>
+    public float Translucency { get; private set; }
+
+    /// <summary>Floor of <see cref="Translucency"/> (retail <c>translucencyOriginal</c>).</summary>
+    /// <exception cref="ArgumentOutOfRangeException">The value is NaN or infinite.</exception>
+    public float TranslucencyOriginal
+    {
+        get => _translucencyOriginal;
+        set
+        {
+            if (!float.IsFinite(value))
+            {
+                throw new ArgumentOutOfRangeException(nameof(value), "Translucency must be finite.");
+            }
+
+            _translucencyOriginal = value;
+        }
+    }
+
+    /// <summary>Normal of the contact plane of the last sweep (retail <c>contact_plane.N</c>).</summary>
+    public Vector3 ContactPlaneNormal { get; private set; }
+
+    /// <summary>Distance term of the contact plane (retail <c>contact_plane.d</c>).</summary>
+    public float ContactPlaneD { get; private set; }
+
+    /// <summary>Cell of the contact plane (retail <c>contact_plane_cell_id</c>).</summary>
+    public uint ContactPlaneCellId { get; private set; }
+
+    /// <summary>Sliding normal of the last sweep (retail <c>sliding_normal</c>).</summary>
+    public Vector3 SlidingNormal { get; private set; }
+
+    /// <summary>Set when the velocity was changed this frame (retail <c>jumped_this_frame</c>); cleared at each active step.</summary>
+    public bool JumpedThisFrame { get; private set; }
+
+    /// <summary>Whether the last move was autonomous (retail <c>last_move_was_autonomous</c>).</summary>
+    public bool LastMoveWasAutonomous { get; set; }
+
+    /// <summary>The part array and animation seam, or null (retail <c>part_array</c>).</summary>
+    public IPartArray? PartArray { get; set; }
+
+    /// <summary>The movement manager seam, or null (retail <c>movement_manager</c>). An object without one deactivates itself
+    /// when it rests on walkable ground.</summary>
+    public IMovementManager? MovementManager { get; set; }
+
+    /// <summary>The position manager, or null until <see cref="MakePositionManager"/> (retail <c>position_manager</c>).</summary>
+    public PositionManager? PositionManager { get; private set; }
+
+    /// <summary>Detection manager seam, or null.</summary>
+    public IDetectionManager? DetectionManager { get; set; }
+
+    /// <summary>Target manager seam, or null.</summary>
+    public ITargetManager? TargetManager { get; set; }
+
+    /// <summary>Particle manager seam, or null (runs for inactive objects too).</summary>
+    public IParticleManager? ParticleManager { get; set; }
+
+    /// <summary>Script manager seam, or null (runs for inactive objects too).</summary>
+    public IScriptManager? ScriptManager { get; set; }
+
+    /// <summary>Sets the persistent state bits (retail <c>set_state</c>, acclient.c:322171, without the lighting and
+    /// no-draw side effects, which belong to the renderer).</summary>
+    public void SetState(PhysicsState newState) => _state = newState;
+
+    /// <summary>Sets the acceleration directly (retail <c>set_description</c> writes it); normally <see cref="CalcAcceleration"/> does.</summary>
+    /// <exception cref="ArgumentException">A component is NaN or infinite.</exception>
+    public void SetAcceleration(Vector3 acceleration)
+    {
+        ThrowIfNotFinite(acceleration, nameof(acceleration));
+        _acceleration = acceleration;
+    }
+
+    /// <inheritdoc />
+    public override string ToString() =>
+        string.Create(System.Globalization.CultureInfo.InvariantCulture, $"PhysicsObj 0x{Id:X8} {_position}");
+
+    private static void ThrowIfNotFinite(Vector3 v, string name)
+    {
+        if (!VectorMath.IsFinite(v))
+        {
+            throw new ArgumentException("Vector components must be finite.", name);
+        }
+    }
+}

@@ -1,0 +1,170 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Built-in <see cref="IPartArray"/> for an object without animations: retail's <c>CSequence</c> with an empty animation
+/// list, which moves the local frame only by the sequence's own velocity and omega (<c>CSequence::apply_physics</c>).
+/// It records the visual values that hooks apply so a client (or a test) can read them.
+/// </summary>
+public sealed class SimplePartArray : IPartArray
+{
+    private readonly float[] _partTranslucency;
+    private readonly float[] _partLuminosity;
+    private readonly float[] _partDiffusion;
+    private Frame _frame = Frame.Identity;
+
+    /// <summary>Creates a part array with <paramref name="numParts"/> parts and <paramref name="numSpheres"/> collision spheres.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">A count is negative.</exception>
+    public SimplePartArray(int numParts = 1, int numSpheres = 0)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(numParts);
+        ArgumentOutOfRangeException.ThrowIfNegative(numSpheres);
+        NumParts = numParts;
+        NumSpheres = numSpheres;
+        _partTranslucency = new float[numParts];
+        _partLuminosity = new float[numParts];
+        _partDiffusion = new float[numParts];
+    }
+
+    /// <inheritdoc />
+    public int NumSpheres { get; }
+
+    /// <inheritdoc />
+    public int NumParts { get; }
+
+    /// <inheritdoc />
+    public float Radius { get; set; }
+
+    /// <inheritdoc />
+    public float Height { get; set; }
+
+    /// <summary>Step-up height, metres; default 0.01 f, retail's value without a setup (acclient.c:325399).</summary>
+    public float StepUpHeight { get; set; } = 0.0099999998f;
+
+    /// <summary>Step-down height, metres; default 0.01 f, retail's value without a setup (acclient.c:325413).</summary>
+    public float StepDownHeight { get; set; } = 0.0099999998f;
+
+    /// <summary>The sequence's velocity in the object's local axes, m/s (retail <c>CSequence::velocity</c>).</summary>
+    public Vector3 SequenceVelocity { get; set; }
+
+    /// <summary>The sequence's angular velocity in the object's local axes, rad/s (retail <c>CSequence::omega</c>).</summary>
+    public Vector3 SequenceOmega { get; set; }
+
+    /// <summary>Last frame the object handed to its parts.</summary>
+    public Frame Frame => _frame;
+
+    /// <summary>Last cell id the object handed to its parts.</summary>
+    public uint CellId { get; private set; }
+
+    /// <summary>Last uniform scale applied.</summary>
+    public float Scale { get; private set; } = 1f;
+
+    /// <summary>Last whole-object translucency applied.</summary>
+    public float Translucency { get; private set; }
+
+    /// <summary>Last whole-object luminosity applied.</summary>
+    public float Luminosity { get; private set; }
+
+    /// <summary>Last whole-object diffusion applied.</summary>
+    public float Diffusion { get; private set; }
+
+    /// <summary>Number of <see cref="HandleMovement"/> calls (one per active step).</summary>
+    public int HandleMovementCount { get; private set; }
+
+    /// <summary>Translucency last applied to part <paramref name="part"/> (0 when out of range).</summary>
+    public float GetPartTranslucency(uint part) => part < (uint)NumParts ? _partTranslucency[part] : 0f;
+
+    /// <summary>Luminosity last applied to part <paramref name="part"/> (0 when out of range).</summary>
+    public float GetPartLuminosity(uint part) => part < (uint)NumParts ? _partLuminosity[part] : 0f;
+
+    /// <summary>Diffusion last applied to part <paramref name="part"/> (0 when out of range).</summary>
+    public float GetPartDiffusion(uint part) => part < (uint)NumParts ? _partDiffusion[part] : 0f;
+
+    /// <inheritdoc />
+    // retail: CSequence::apply_physics (acclient.c:339859), reached from CSequence::update with an empty anim list
+    public void Update(float quantum, ref Frame offsetFrame)
+    {
+        // sign = quantum: |quantum|, negated only for a negative sign (never, here).
+        double s = System.Math.Abs((double)quantum);
+        if (quantum < 0f)
+        {
+            s = -s;
+        }
+
+        Vector3 v = SequenceVelocity;
+        Vector3 o = offsetFrame.Origin;
+        offsetFrame.Origin = new Vector3((float)(s * v.X + o.X), (float)(s * v.Y + o.Y), (float)(s * v.Z + o.Z));
+        Vector3 w = SequenceOmega;
+        offsetFrame.Rotate(new Vector3((float)(s * w.X), (float)(s * w.Y), (float)(s * w.Z)));
+    }
+
+    /// <inheritdoc />
+    public void SetFrame(in Frame frame) => _frame = frame;
+
+    /// <inheritdoc />
+    public void SetCellId(uint cellId) => CellId = cellId;
+
+    /// <inheritdoc />
+    public void HandleMovement() => HandleMovementCount++;
+
+    /// <inheritdoc />
+    public void HandleEnterWorld()
+    {
+    }
+
+    /// <inheritdoc />
+    public Frame GetPartFrame(int index) => _frame;
+
+    /// <inheritdoc />
+    public void SetScale(float scale) => Scale = scale;
+
+    /// <inheritdoc />
+    public void SetTranslucency(float translucency)
+    {
+        Translucency = translucency;
+        Array.Fill(_partTranslucency, translucency);
+    }
+
+    /// <inheritdoc />
+    public void SetPartTranslucency(uint part, float translucency)
+    {
+        if (part < (uint)NumParts)
+        {
+            _partTranslucency[part] = translucency;
+        }
+    }
+
+    /// <inheritdoc />
+    public void SetLuminosity(float luminosity)
+    {
+        Luminosity = luminosity;
+        Array.Fill(_partLuminosity, luminosity);
+    }
+
+    /// <inheritdoc />
+    public void SetPartLuminosity(uint part, float luminosity)
+    {
+        if (part < (uint)NumParts)
+        {
+            _partLuminosity[part] = luminosity;
+        }
+    }
+
+    /// <inheritdoc />
+    public void SetDiffusion(float diffusion)
+    {
+        Diffusion = diffusion;
+        Array.Fill(_partDiffusion, diffusion);
+    }
+
+    /// <inheritdoc />
+    public void SetPartDiffusion(uint part, float diffusion)
+    {
+        if (part < (uint)NumParts)
+        {
+            _partDiffusion[part] = diffusion;
+        }
+    }
+}

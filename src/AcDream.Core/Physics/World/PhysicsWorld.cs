@@ -1,0 +1,220 @@
+using System;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// A physics scene: the objects it owns and the state that retail kept in globals — the client clock
+/// (<c>Timer::cur_time</c>), the physics clock (<c>PhysicsTimer::curr_time</c>), the last world update (<c>CPhysics</c>'
+/// <c>last_update</c>), the player (<c>CPhysicsObj::player_object</c>) and object maintenance
+/// (<c>CObjectMaint::is_active</c>). Two worlds share nothing and can tick side by side.
+/// </summary>
+/// <remarks>Not thread-safe: one world is ticked by one thread at a time.</remarks>
+public sealed partial class PhysicsWorld
+{
+    private PhysicsObj[] _objects = new PhysicsObj[16];
+    private int _count;
+    private PhysicsObj? _player;
+    private readonly System.Collections.Generic.Dictionary<uint, PhysicsObj> _byId = new();
+
+    /// <summary>Creates a world whose clocks start at <paramref name="startTime"/> seconds.</summary>
+    /// <param name="startTime">Initial client time, seconds.</param>
+    /// <param name="profile">Time-slicing profile; <see cref="PhysicsProfile.Retail"/> when null.</param>
+    /// <param name="hookPoolCapacity">Number of <see cref="FPHook"/>s preallocated so that fades do not allocate.</param>
+    /// <exception cref="ArgumentException"><paramref name="startTime"/> is NaN or infinite.</exception>
+    // retail: CPhysics::CPhysics (acclient.c:311398) sets PhysicsTimer::curr_time = Timer::cur_time
+    public PhysicsWorld(double startTime = 0.0, PhysicsProfile? profile = null, int hookPoolCapacity = 64)
+    {
+        if (!double.IsFinite(startTime))
+        {
+            throw new ArgumentException("Start time must be finite.", nameof(startTime));
+        }
+
+        ArgumentOutOfRangeException.ThrowIfNegative(hookPoolCapacity);
+        Profile = profile ?? PhysicsProfile.Retail;
+        CurrentTime = startTime;
+        PhysicsTime = startTime;
+        LastUpdate = startTime;
+        for (int i = 0; i < hookPoolCapacity; i++)
+        {
+            ReturnFPHook(new FPHook());
+        }
+    }
+
+    /// <summary>The time-slicing profile.</summary>
+    public PhysicsProfile Profile { get; }
+
+    /// <summary>The client clock, seconds (retail <c>Timer::cur_time</c>).</summary>
+    public double CurrentTime { get; private set; }
+
+    /// <summary>The physics clock, seconds (retail <c>PhysicsTimer::curr_time</c>): during an object's update it is that object's
+    /// consumed time; hooks are timed against it.</summary>
+    public double PhysicsTime { get; internal set; }
+
+    /// <summary>Client time of the last world update, seconds (retail <c>last_update</c> in <c>CPhysics::UseTime</c>).</summary>
+    public double LastUpdate { get; private set; }
+
+    /// <summary>True while object maintenance is active (retail <c>obj_maint-&gt;is_active</c>): only then are objects farther than
+    /// 96 m from the player made inactive. True by default, as in shipped play.</summary>
+    public bool ObjectMaintenanceActive { get; set; } = true;
+
+    /// <summary>The collision sweep. <see cref="FreeSpaceTransition.Instance"/> by default.</summary>
+    public TransitionSeam Transition { get; set; } = FreeSpaceTransition.Instance;
+
+    /// <summary>Optional step observer (tests, diagnostics); null costs nothing.</summary>
+    public IStepObserver? StepObserver { get; set; }
+
+    /// <summary>Optional listener told after the player's update.</summary>
+    public IPlayerPhysicsListener? PlayerListener { get; set; }
+
+    /// <summary>Optional factory for movement managers created on demand (<c>get_minterp</c>); when null a
+    /// <see cref="BasicMovementManager"/> is created.</summary>
+    public IMovementManagerFactory? MovementManagerFactory { get; set; }
+
+    /// <summary>Optional client callback that plays physics scripts (CallPES hooks).</summary>
+    public IScriptPlayer? ScriptPlayer { get; set; }
+
+    /// <summary>Number of objects the world owns.</summary>
+    public int ObjectCount => _count;
+
+    /// <summary>
+    /// The player object (retail <c>CPhysicsObj::player_object</c>): objects measure their distance to it. Null for none.
+    /// </summary>
+    /// <exception cref="ArgumentException">The object belongs to another world or was removed.</exception>
+    public PhysicsObj? Player
+    {
+        get => _player;
+        set
+        {
+            if (value is not null && (value.World != this || value.WorldIndex < 0))
+            {
+                throw new ArgumentException("The player must be an object of this world.", nameof(value));
+            }
+
+            _player = value;
+        }
+    }
+
+    /// <summary>Object <paramref name="index"/> (0 &lt;= index &lt; <see cref="ObjectCount"/>), in insertion order.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">Index out of range.</exception>
+    public PhysicsObj GetObject(int index)
+    {
+        if ((uint)index >= (uint)_count)
+        {
+            throw new ArgumentOutOfRangeException(nameof(index));
+        }
+
+        return _objects[index];
+    }
+
+    /// <summary>The object with id <paramref name="id"/> (the first created with that id), or null
+    /// (retail <c>CPhysicsObj::GetObjectA</c> through the object maintainer's table, acclient.c:316437).</summary>
+    public PhysicsObj? GetObjectById(uint id) => id != 0 && _byId.TryGetValue(id, out PhysicsObj? o) ? o : null;
+
+    /// <summary>Creates an object owned by this world (retail: <c>CPhysicsObj</c> constructor plus registration in the object
+    /// table). It is not in a cell until placed (<see cref="PhysicsObj.EnterWorld"/> or <see cref="PhysicsObj.SetPositionSimple"/>).</summary>
+    public PhysicsObj CreateObject(uint id = 0)
+    {
+        var obj = new PhysicsObj(this, id);
+        if (_count == _objects.Length)
+        {
+            Array.Resize(ref _objects, _objects.Length * 2);
+        }
+
+        obj.WorldIndex = _count;
+        _objects[_count++] = obj;
+        if (id != 0)
+        {
+            _byId.TryAdd(id, obj);
+        }
+
+        return obj;
+    }
+
+    /// <summary>Removes <paramref name="obj"/> from the world (it is no longer ticked). Order of the others is kept.</summary>
+    /// <exception cref="ArgumentException">The object is not in this world.</exception>
+    public void RemoveObject(PhysicsObj obj)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        if (obj.World != this || obj.WorldIndex < 0)
+        {
+            throw new ArgumentException("The object is not in this world.", nameof(obj));
+        }
+
+        int i = obj.WorldIndex;
+        Array.Copy(_objects, i + 1, _objects, i, _count - i - 1);
+        _count--;
+        _objects[_count] = null!;
+        for (int k = i; k < _count; k++)
+        {
+            _objects[k].WorldIndex = k;
+        }
+
+        obj.WorldIndex = -1;
+        if (obj.Id != 0 && _byId.TryGetValue(obj.Id, out PhysicsObj? found) && found == obj)
+        {
+            _byId.Remove(obj.Id);
+        }
+
+        obj.ClearHooksOnRemove();
+        if (_player == obj)
+        {
+            _player = null;
+        }
+    }
+
+    /// <summary>Sets the client clock without ticking (retail: the client loop advancing <c>Timer::cur_time</c>).</summary>
+    /// <exception cref="ArgumentException"><paramref name="now"/> is NaN or infinite. The clock may go backwards (retail resyncs).</exception>
+    public void SetCurrentTime(double now)
+    {
+        if (!double.IsFinite(now))
+        {
+            throw new ArgumentException("Time must be finite.", nameof(now));
+        }
+
+        CurrentTime = now;
+    }
+
+    /// <summary>Sets the client clock to <paramref name="now"/> and runs <see cref="UseTime"/>.</summary>
+    /// <returns>True when the objects were updated (at least MinQuantum had passed).</returns>
+    /// <exception cref="ArgumentException"><paramref name="now"/> is NaN or infinite.</exception>
+    public bool Tick(double now)
+    {
+        SetCurrentTime(now);
+        return UseTime();
+    }
+
+    /// <summary>
+    /// The world tick: when the client clock went backwards, resynchronises; when at least MinQuantum has passed since the
+    /// last update, runs <see cref="PhysicsObj.UpdateObject"/> on every object in order and records the time.
+    /// </summary>
+    /// <returns>True when the objects were updated.</returns>
+    // retail: CPhysics::UseTime (acclient.c:311334)
+    public bool UseTime()
+    {
+        double quantum = CurrentTime - LastUpdate;
+        if (quantum < 0.0)
+        {
+            LastUpdate = CurrentTime;
+            return false;
+        }
+
+        if (!(quantum >= Profile.MinQuantum))
+        {
+            return false;
+        }
+
+        PhysicsObj? player = _player;
+        for (int i = 0; i < _count; i++)
+        {
+            PhysicsObj obj = _objects[i];
+            obj.UpdateObject();
+            if (obj == player)
+            {
+                PlayerListener?.PlayerPhysicsUpdated(obj);
+            }
+        }
+
+        LastUpdate = CurrentTime;
+        return true;
+    }
+}
