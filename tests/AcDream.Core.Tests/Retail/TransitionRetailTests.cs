@@ -120,6 +120,19 @@ public class TransitionRetailTests
         Assert.Equal(4u, n);
     }
 
+    // ---- the negligible-step compare (ambiguity, docs/divergences.md) --------------------------------------------
+
+    [Fact]
+    public void IsNegligibleOffset_ThresholdIsEpsilonOnTheLength()
+    {
+        // |offset|² < EPSILON²: 0.99 EPSILON is negligible, 1.01 EPSILON is not; a 1 cm step (|offset|² = 1e-4 < EPSILON)
+        // is a real step, which rules out the other reading |offset|² < EPSILON.
+        Assert.True(Transition.IsNegligibleOffset(new Vector3(0.99f * PhysicsGlobals.Epsilon, 0f, 0f)));
+        Assert.False(Transition.IsNegligibleOffset(new Vector3(1.01f * PhysicsGlobals.Epsilon, 0f, 0f)));
+        Assert.False(Transition.IsNegligibleOffset(new Vector3(0.01f, 0f, 0f)));
+        Assert.True(Transition.IsNegligibleOffset(Vector3.Zero));
+    }
+
     // ---- adjust_offset -------------------------------------------------------------------------------------------
 
     [Fact]
