@@ -1,3 +1,4 @@
+using System;
 namespace AcDream.Core.Physics;
 
 /// <summary>
@@ -20,6 +21,13 @@ public interface IPartArray
     /// update_object (retail keeps its origin and applies only the new orientation).
     /// </summary>
     int NumSpheres { get; }
+
+    /// <summary>
+    /// The collision spheres, <see cref="NumSpheres"/> long, in the object's local frame and NOT scaled (the sweep scales
+    /// them by the object's scale, as retail's <c>SPHEREPATH::init_sphere</c> does). Retail: <c>CPartArray::GetSphere</c>
+    /// (acclient.c:325363), the setup's sphere array.
+    /// </summary>
+    ReadOnlySpan<Sphere> Spheres { get; }
 
     /// <summary>Number of parts, for <c>UpdateChild</c>'s part lookup.</summary>
     int NumParts { get; }

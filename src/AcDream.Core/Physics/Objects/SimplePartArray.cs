@@ -14,6 +14,7 @@ public sealed class SimplePartArray : IPartArray
     private readonly float[] _partLuminosity;
     private readonly float[] _partDiffusion;
     private Frame _frame = Frame.Identity;
+    private Sphere[] _spheres;
 
     /// <summary>Creates a part array with <paramref name="numParts"/> parts and <paramref name="numSpheres"/> collision spheres.</summary>
     /// <exception cref="ArgumentOutOfRangeException">A count is negative.</exception>
@@ -22,14 +23,36 @@ public sealed class SimplePartArray : IPartArray
         ArgumentOutOfRangeException.ThrowIfNegative(numParts);
         ArgumentOutOfRangeException.ThrowIfNegative(numSpheres);
         NumParts = numParts;
-        NumSpheres = numSpheres;
+        _spheres = new Sphere[numSpheres];
+        Array.Fill(_spheres, Sphere.Dummy);
         _partTranslucency = new float[numParts];
         _partLuminosity = new float[numParts];
         _partDiffusion = new float[numParts];
     }
 
     /// <inheritdoc />
-    public int NumSpheres { get; }
+    public int NumSpheres => _spheres.Length;
+
+    /// <inheritdoc />
+    /// <remarks>Created as <see cref="Sphere.Dummy"/> spheres; replace them with <see cref="SetSpheres"/>.</remarks>
+    public ReadOnlySpan<Sphere> Spheres => _spheres;
+
+    /// <summary>Replaces the collision spheres (a setup's sphere list; object-local, unscaled).</summary>
+    /// <exception cref="ArgumentException">A centre or radius is NaN or infinite, or a radius is not positive.</exception>
+    public void SetSpheres(ReadOnlySpan<Sphere> spheres)
+    {
+        Owner?.Touch();
+        for (int i = 0; i < spheres.Length; i++)
+        {
+            Sphere s = spheres[i];
+            if (!VectorMath.IsFinite(s.Center) || !float.IsFinite(s.Radius) || !(s.Radius > 0f))
+            {
+                throw new ArgumentException("Spheres need a finite centre and a positive finite radius.", nameof(spheres));
+            }
+        }
+
+        _spheres = spheres.ToArray();
+    }
 
     /// <inheritdoc />
     public int NumParts { get; }

@@ -27,7 +27,7 @@ public sealed partial class LandCell
     }
 
     /// <summary>The cell id, <c>0xXXYY00CC</c> with CC = x * 8 + y + 1. Retail: <c>m_DID.id</c>.</summary>
-    public uint Id { get; }
+    public override uint Id { get; }
 
     /// <summary>The landblock that owns the cell. Retail: <c>myLandBlock_</c>.</summary>
     public LandBlock LandBlock { get; }
@@ -79,7 +79,7 @@ public sealed partial class LandCell
 
     /// <summary>True when <paramref name="point"/> (landblock-local) lies over this cell.</summary>
     // retail: CLandCell::point_in_cell (acclient.c:354880)
-    public bool PointInCell(Vector3 point) => FindTerrainPoly(point, out _);
+    public override bool PointInCell(Vector3 point) => FindTerrainPoly(point, out _);
 
     /// <summary>
     /// The terrain height, in metres, under <paramref name="point"/> (landblock-local): the z where a vertical line

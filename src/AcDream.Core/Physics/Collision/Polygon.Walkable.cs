@@ -1,0 +1,113 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>The walkable-polygon queries of the sweep (used with BSP walkables, issue 6; terrain never sets one).</summary>
+public sealed partial class Polygon
+{
+    /// <summary>
+    /// True when <paramref name="sphere"/>, dropped along <paramref name="up"/> onto the polygon's plane, still stands on
+    /// the polygon: its projected centre is inside every edge or within the radius of a vertex.
+    /// </summary>
+    /// <remarks>Retail ambiguity: after the inside-edge test fails, the decompiler shows a second flags-only test (C0|C2)
+    /// that we read as the same "outside this edge" compare, so an outside centre returns false at once (the edge
+    /// projection test after it is then unreachable, as the flags say). Pinned for issue 6.</remarks>
+    // retail: CPolygon::check_walkable (acclient.c:360226)
+    public bool CheckWalkable(in Sphere sphere, Vector3 up)
+    {
+        Vector3 n = Plane.N;
+        double angleUp = (double)n.Y * up.Y + (double)n.Z * up.Z + (double)up.X * n.X;
+        if (Math.Abs(angleUp) < PhysicsGlobals.Epsilon)
+        {
+            return false;
+        }
+
+        Vector3 c = sphere.Center;
+        double t = ((double)n.Z * c.Z + (double)n.Y * c.Y + (double)c.X * n.X + Plane.D) / angleUp;
+        float ty = (float)(t * up.Y);
+        float tz = (float)(t * up.Z);
+        float cx = (float)(c.X - t * up.X);
+        float cy = c.Y - ty;
+        float cz = c.Z - tz;
+        float inside = sphere.Radius * sphere.Radius;
+        ReadOnlySpan<Vector3> v = Vertices;
+        int last = v.Length - 1;
+        for (int i = 0; i < v.Length; i++)
+        {
+            Vector3 a = v[last];
+            Vector3 b = v[i];
+            last = i;
+            float ex = b.X - a.X;
+            float ey = b.Y - a.Y;
+            float ez = b.Z - a.Z;
+            float dx = cx - a.X;
+            float dy = cy - a.Y;
+            float dz = cz - a.Z;
+            double test = (double)dz * ((double)ey * n.X - (double)ex * n.Y)
+                          + (double)dy * ((double)ex * n.Z - (double)ez * n.X)
+                          + (double)dx * ((double)ez * n.Y - (double)ey * n.Z);
+            if (!(test >= 0.0))
+            {
+                return false;
+            }
+
+            if ((double)dz * dz + (double)dy * dy + (double)dx * dx <= inside)
+            {
+                return true;
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>
+    /// The first edge (from the last vertex round to the first) that <paramref name="sphere"/>'s centre, dropped along
+    /// <paramref name="up"/> onto the plane, lies outside of; <paramref name="normal"/> receives that edge's unit
+    /// in-plane normal <c>cross(N, edge)</c> (pointing into the polygon). False when no edge is crossed.
+    /// </summary>
+    // retail: CPolygon::find_crossed_edge (acclient.c:360396)
+    public bool FindCrossedEdge(in Sphere sphere, Vector3 up, out Vector3 normal)
+    {
+        normal = Vector3.Zero;
+        Vector3 n = Plane.N;
+        double angleUp = (double)n.Y * up.Y + (double)n.Z * up.Z + (double)n.X * up.X;
+        if (Math.Abs(angleUp) < PhysicsGlobals.Epsilon)
+        {
+            return false;
+        }
+
+        Vector3 c = sphere.Center;
+        double t = ((double)n.Z * c.Z + (double)n.Y * c.Y + (double)n.X * c.X + Plane.D) / angleUp;
+        float ty = (float)(t * up.Y);
+        float tz = (float)(t * up.Z);
+        float cx = (float)(c.X - t * up.X);
+        float cy = c.Y - ty;
+        float cz = c.Z - tz;
+        ReadOnlySpan<Vector3> v = Vertices;
+        int last = v.Length - 1;
+        for (int i = 0; i < v.Length; i++)
+        {
+            Vector3 a = v[last];
+            Vector3 b = v[i];
+            last = i;
+            float ex = b.X - a.X;
+            float ey = b.Y - a.Y;
+            float ez = (float)((double)b.Z - a.Z);
+            double test = ((double)cz - a.Z) * ((double)ey * n.X - (double)ex * n.Y)
+                          + ((double)cy - a.Y) * ((double)ex * n.Z - (double)ez * n.X)
+                          + ((double)cx - a.X) * ((double)ez * n.Y - (double)ey * n.Z);
+            if (test < 0.0 || double.IsNaN(test))
+            {
+                float nx = (float)((double)ez * n.Y - (double)ey * n.Z);
+                float ny = (float)((double)ex * n.Z - (double)ez * n.X);
+                float nz = (float)((double)ey * n.X - (double)ex * n.Y);
+                double len = Math.Sqrt((double)nx * nx + (double)ny * ny + (double)nz * nz);
+                normal = new Vector3((float)(1.0 / len * nx), (float)(1.0 / len * ny), (float)(1.0 / len * nz));
+                return true;
+            }
+        }
+
+        return false;
+    }
+}
