@@ -14,9 +14,15 @@ public sealed partial class InterpolationManager
     /// </summary>
     /// <param name="offset">The substep's offset frame, replaced when a step is taken.</param>
     /// <param name="quantum">Substep duration, seconds.</param>
+    /// <exception cref="System.ArgumentException"><paramref name="quantum"/> is NaN or infinite (state unchanged).</exception>
     // retail: InterpolationManager::adjust_offset (acclient.c:389177)
     public void AdjustOffset(ref Frame offset, double quantum)
     {
+        if (!double.IsFinite(quantum))
+        {
+            throw new System.ArgumentException("Quantum must be finite.", nameof(quantum));
+        }
+
         if (_count == 0)
         {
             return;

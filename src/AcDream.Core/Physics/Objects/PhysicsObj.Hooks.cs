@@ -84,10 +84,12 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Applies one interpolated hook value to the object or its parts.</summary>
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     // retail: CPhysicsObj::process_fp_hook (acclient.c:320571)
     public void ProcessFPHook(PhysicsHookType type, float value, uint userData)
     {
         Touch();
+        ThrowIfNotFinite(value, 0.0);
         switch (type)
         {
             case PhysicsHookType.Scale:
@@ -138,10 +140,12 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Sets the scale at once (retail <c>SetScaleStatic</c>).</summary>
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     // retail: CPhysicsObj::SetScaleStatic (acclient.c:319007)
     public void SetScaleStatic(float scale)
     {
         Touch();
+        ThrowIfNotFinite(scale, 0.0);
         Scale = scale;
         PartArray?.SetScale(scale);
     }
@@ -183,10 +187,12 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Sets the translucency at once, never below <see cref="TranslucencyOriginal"/>.</summary>
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     // retail: CPhysicsObj::SetTranslucencyInternal (acclient.c:316802)
     public void SetTranslucencyInternal(float translucency)
     {
         Touch();
+        ThrowIfNotFinite(translucency, 0.0);
         float t = translucency < (double)_translucencyOriginal ? _translucencyOriginal : translucency;
         Translucency = t;
         PartArray?.SetTranslucency(t);

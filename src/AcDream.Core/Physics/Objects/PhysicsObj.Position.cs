@@ -9,10 +9,12 @@ public sealed partial class PhysicsObj
     /// Stores <paramref name="frame"/> as the object's frame without any collision test, places the parts and moves the
     /// attached children. A frame whose origin is finite but whose quaternion has a NaN gets an all-zero quaternion, as retail.
     /// </summary>
+    /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged; retail would store it).</exception>
     // retail: CPhysicsObj::set_frame (acclient.c:321327)
     public void SetFrame(in Frame frame)
     {
         Touch();
+        ThrowIfNotFinite(frame.Origin, nameof(frame));
         Frame f = frame;
         if (!f.IsValid() && f.IsValidExceptForHeading())
         {
@@ -29,10 +31,12 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Stores a frame with no validity repair (retail <c>set_initial_frame</c>).</summary>
+    /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged; retail would store it).</exception>
     // retail: CPhysicsObj::set_initial_frame (acclient.c:321355)
     public void SetInitialFrame(in Frame frame)
     {
         Touch();
+        ThrowIfNotFinite(frame.Origin, nameof(frame));
         _position.Frame = frame;
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
@@ -60,10 +64,12 @@ public sealed partial class PhysicsObj
 
     /// <summary>Writes a position without a cell change or collision test (outdoor ids are re-homed to the cell under the
     /// origin first).</summary>
+    /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged).</exception>
     // retail: CPhysicsObj::store_position (acclient.c:321388)
     public void StorePosition(in Position p)
     {
         Touch();
+        ThrowIfNotFinite(p.Frame.Origin, nameof(p));
         Position np = p;
         if ((np.ObjCellId & 0xFFFFu) < 0x100u)
         {

@@ -58,36 +58,69 @@ public sealed class SimplePartArray : IPartArray
     public int NumParts { get; }
 
     /// <inheritdoc />
-    public float Radius { get; set; }
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float Radius
+    {
+        get => _radius;
+        set => _radius = Finite(value);
+    }
 
     /// <inheritdoc />
-    public float Height { get; set; }
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float Height
+    {
+        get => _height;
+        set => _height = Finite(value);
+    }
 
     /// <summary>Step-up height, metres; default 0.01 f, retail's value without a setup (acclient.c:325399).</summary>
-    public float StepUpHeight { get; set; } = 0.0099999998f;
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float StepUpHeight
+    {
+        get => _stepUpHeight;
+        set => _stepUpHeight = Finite(value);
+    }
 
     /// <summary>Step-down height, metres; default 0.01 f, retail's value without a setup (acclient.c:325413).</summary>
-    public float StepDownHeight { get; set; } = 0.0099999998f;
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float StepDownHeight
+    {
+        get => _stepDownHeight;
+        set => _stepDownHeight = Finite(value);
+    }
+
+    private float _radius;
+    private float _height;
+    private float _stepUpHeight = 0.0099999998f;
+    private float _stepDownHeight = 0.0099999998f;
+
+    private static float Finite(float value) =>
+        float.IsFinite(value) ? value : throw new ArgumentException("Part array values must be finite.", nameof(value));
+
+    private static Vector3 Finite(Vector3 value) =>
+        VectorMath.IsFinite(value) ? value : throw new ArgumentException("Part array vectors must be finite.", nameof(value));
 
     /// <summary>The sequence's velocity in the object's local axes, m/s (retail <c>CSequence::velocity</c>).</summary>
+    /// <exception cref="ArgumentException">A component is NaN or infinite (state unchanged).</exception>
     public Vector3 SequenceVelocity
     {
         get => _sequenceVelocity;
         set
         {
             Owner?.Touch();
-            _sequenceVelocity = value;
+            _sequenceVelocity = Finite(value);
         }
     }
 
     /// <summary>The sequence's angular velocity in the object's local axes, rad/s (retail <c>CSequence::omega</c>).</summary>
+    /// <exception cref="ArgumentException">A component is NaN or infinite (state unchanged).</exception>
     public Vector3 SequenceOmega
     {
         get => _sequenceOmega;
         set
         {
             Owner?.Touch();
-            _sequenceOmega = value;
+            _sequenceOmega = Finite(value);
         }
     }
 
