@@ -240,6 +240,7 @@ public sealed partial class PhysicsObj
     // retail: the lost-cell branch of CPhysicsObj::SetPositionInternal (acclient.c:322503, 323034)
     public void GoToLostCell(in Position p)
     {
+        RemoveShadowsFromCells();
         LeaveCell();
         StorePosition(p);
         _transientState &= ~TransientState.Active;
