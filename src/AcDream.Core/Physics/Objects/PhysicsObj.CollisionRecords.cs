@@ -31,7 +31,8 @@ public sealed partial class PhysicsObj
 
         if (NumCollisionRecords == _collisionTable.Length)
         {
-            // Retail's table starts with 4 buckets; growth allocates only when more objects touch than ever before.
+            // Retail's table starts with 4 buckets; growth allocates only when more objects touch than ever before (the first
+            // touch makes the table, as retail's first track_object_collision does).
             Array.Resize(ref _collisionTable, _collisionTable.Length == 0 ? 4 : _collisionTable.Length * 2);
         }
 

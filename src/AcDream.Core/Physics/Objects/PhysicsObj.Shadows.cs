@@ -7,6 +7,10 @@ public sealed partial class PhysicsObj
 {
     private ShadowObj[] _shadowObjects = Array.Empty<ShadowObj>();
 
+    /// <summary>Shadows made on the first placement: enough for one sphere on a cell corner (4 cells), so that walking
+    /// around allocates nothing; more are made only for objects overlapping more cells.</summary>
+    public const int InitialShadowCapacity = 4;
+
     /// <summary>Number of shadows in use. Retail: <c>num_shadow_objects</c>.</summary>
     public int NumShadowObjects { get; private set; }
 
@@ -111,6 +115,11 @@ public sealed partial class PhysicsObj
         if (n <= _shadowObjects.Length)
         {
             return;
+        }
+
+        if (n < InitialShadowCapacity)
+        {
+            n = InitialShadowCapacity;
         }
 
         int old = _shadowObjects.Length;

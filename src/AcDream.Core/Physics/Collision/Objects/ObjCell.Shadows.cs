@@ -5,7 +5,8 @@ namespace AcDream.Core.Physics;
 /// <summary>The cell's list of object shadows: the objects a sweep through the cell must test.</summary>
 public abstract partial class ObjCell
 {
-    private ShadowObj[] _shadowObjects = Array.Empty<ShadowObj>();
+    // Allocated with the cell (one growth step), so that the first objects to walk in do not allocate inside a tick.
+    private ShadowObj[] _shadowObjects = new ShadowObj[ShadowListGrowth];
 
     /// <summary>Growth step of the shadow list. Retail grows by 5 (<c>add_shadow_object</c>, acclient.c:346804).</summary>
     public const int ShadowListGrowth = 5;
