@@ -8,6 +8,11 @@ public sealed partial class PhysicsObj
 {
     private CollisionRecord[] _collisionTable = Array.Empty<CollisionRecord>();
 
+    /// <summary>How long a touch stays in the collision table without being refreshed, seconds of physics time (an ethereal
+    /// object's touch ends as soon as the clock moves on). Retail: the <c>&gt; 1.0</c> test of
+    /// <c>report_collision_end</c> (acclient.c:321712).</summary>
+    public const double CollisionRecordLifetime = 1.0;
+
     /// <summary>Number of entries in the collision table.</summary>
     public int NumCollisionRecords { get; private set; }
 

@@ -123,7 +123,7 @@ public sealed partial class RetailTransition
         {
             CollisionRecord r = obj.CollisionRecords[i];
             double age = now - r.TouchedTime;
-            if (age > 1.0 || (r.Ethereal && age > 0.0) || forceEnd)
+            if (age > PhysicsObj.CollisionRecordLifetime || (r.Ethereal && age > 0.0) || forceEnd)
             {
                 obj.RemoveCollisionRecordAt(i);
                 ReportObjectCollisionEnd(obj, r.ObjectId);
