@@ -17,6 +17,21 @@ public abstract partial class ObjCell
     /// <summary>The shadows in the cell, <see cref="NumShadowObjects"/> long, in retail's list order.</summary>
     public ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
 
+    /// <summary>
+    /// Makes room for <paramref name="capacity"/> shadows without growing later (for a client that knows how crowded a cell
+    /// will be, e.g. when its landblock loads). The list otherwise grows by <see cref="ShadowListGrowth"/> only past its
+    /// largest size so far, and never shrinks.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="capacity"/> is negative.</exception>
+    public void ReserveShadowCapacity(int capacity)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(capacity);
+        if (capacity > _shadowObjects.Length)
+        {
+            Array.Resize(ref _shadowObjects, capacity);
+        }
+    }
+
     /// <summary>Lists <paramref name="shadow"/> in the cell and points it at the cell.</summary>
     /// <remarks>The list grows by <see cref="ShadowListGrowth"/> when full and never shrinks (retail shrinks a list with
     /// more than 10 spare slots; keeping the capacity keeps the tick allocation-free).</remarks>
