@@ -13,6 +13,12 @@ public sealed class RetailTransition : TransitionSeam
 {
     private Transition? _committed;
 
+    /// <summary>
+    /// How far, in metres (in x and in y, signed), a non-sliding placement may end from the requested spot. Retail:
+    /// 0.050000001 in <c>CPhysicsObj::CheckPositionInternal</c> (acclient.c:319172), float bits 0x3D4CCCCD.
+    /// </summary>
+    public const float PlacementTolerance = 0.050000001f;
+
     /// <summary>Creates the sweep over <paramref name="cells"/>.</summary>
     /// <exception cref="ArgumentNullException"><paramref name="cells"/> is null.</exception>
     public RetailTransition(ICellSource cells)
@@ -59,7 +65,7 @@ public sealed class RetailTransition : TransitionSeam
             TransientState ts = obj.TransientState;
             if ((ts & TransientState.StationaryStuck) != 0)
             {
-                t.CollisionInfo.FramesStationaryFall = 3;
+                t.CollisionInfo.FramesStationaryFall = Physics.Transition.StationaryFallFrames;
             }
             else if ((ts & TransientState.StationaryStop) != 0)
             {
@@ -324,8 +330,8 @@ public sealed class RetailTransition : TransitionSeam
         }
 
         Position curr = t.SpherePath.CurrPos;
-        if (curr.Frame.Origin.X - p.Frame.Origin.X < 0.050000001f
-            && curr.Frame.Origin.Y - p.Frame.Origin.Y < 0.050000001f
+        if (curr.Frame.Origin.X - p.Frame.Origin.X < PlacementTolerance
+            && curr.Frame.Origin.Y - p.Frame.Origin.Y < PlacementTolerance
             && curr.ObjCellId == cell.Id)
         {
             p.Frame.Origin = curr.Frame.Origin;

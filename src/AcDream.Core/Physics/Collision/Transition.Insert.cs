@@ -89,7 +89,7 @@ public sealed partial class Transition
             }
 
             // The object was on the ground and this step left it: follow the ground down.
-            float stepDownHeight = 0.039999999f;
+            float stepDownHeight = NotWalkingStepHeight;
             float zVal = PhysicsGlobals.LandingZ;
             if ((ObjectInfo.State & ObjectInfoState.OnWalkable) != 0)
             {
@@ -356,7 +356,7 @@ public sealed partial class Transition
             {
                 // Third frame without progress: stand the object on a flat plane at its sphere's bottom.
                 Sphere g = path.GlobalSphere[0];
-                ci.FramesStationaryFall = 3;
+                ci.FramesStationaryFall = StationaryFallFrames;
                 double xy = (double)g.Center.Y + g.Center.X;
                 double z = xy * 0.0 + g.Center.Z;
                 var plane = new Plane(new Vector3(0f, 0f, 1f), (float)(g.Radius - z));

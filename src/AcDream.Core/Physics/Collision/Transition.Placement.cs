@@ -111,21 +111,21 @@ public sealed partial class Transition
 
         float radius = path.LocalSphere[0].Radius;
         bool small = false;
-        float adjustRad = 4.0f;
-        if (radius >= 0.125f)
+        float adjustRad = PlacementSearchDistance;
+        if (radius >= PlacementSmallRadius)
         {
-            if (radius < 0.47999999f)
+            if (radius < PlacementMinRadius)
             {
-                radius = 0.47999999f;
+                radius = PlacementMinRadius;
             }
         }
         else
         {
             small = true;
-            adjustRad = 2.0f;
+            adjustRad = PlacementSmallSearchDistance;
         }
 
-        double steps = 4.0 / (1.0 * radius);
+        double steps = PlacementSearchDistance / (1.0 * radius);
         if (small)
         {
             steps *= 0.5;
@@ -141,7 +141,7 @@ public sealed partial class Transition
         uint numSteps = unchecked((uint)(ulong)ceilSteps);
         float distance = 0f;
         float adjust = 0f;
-        float radialPerStep = (float)((double)distPerStep / radius * 3.1415999);
+        float radialPerStep = (float)((double)distPerStep / radius * PlacementPi);
         for (uint i = 0; i < numSteps; i++)
         {
             distance += distPerStep;

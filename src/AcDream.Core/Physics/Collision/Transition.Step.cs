@@ -56,7 +56,7 @@ public sealed partial class Transition
         CollisionInfo.ContactPlaneIsWater = false;
         path.StepUp = true;
         path.StepUpNormal = collisionNormal;
-        float stepDownHeight = 0.039999999f;
+        float stepDownHeight = NotWalkingStepHeight;
         float zVal = PhysicsGlobals.LandingZ;
         if ((ObjectInfo.State & ObjectInfoState.OnWalkable) != 0)
         {

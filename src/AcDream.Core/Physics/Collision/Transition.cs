@@ -17,6 +17,37 @@ namespace AcDream.Core.Physics;
 /// </remarks>
 public sealed partial class Transition
 {
+    /// <summary>
+    /// Step-down (and step-up) height, in metres, of an object that is not on walkable ground (and the landing allowance
+    /// <see cref="PhysicsGlobals.LandingZ"/> goes with it). Retail: the literal 0.039999999 in <c>transitional_insert</c>
+    /// (acclient.c:312833) and <c>step_up</c> (acclient.c:312793). Float bits 0x3D23D70A.
+    /// </summary>
+    public const float NotWalkingStepHeight = 0.039999999f;
+
+    /// <summary>
+    /// Consecutive no-progress frames after which a falling object is stood on a made-up flat plane. Retail: the third
+    /// increment of <c>frames_stationary_fall</c> in <c>validate_transition</c> (acclient.c:312193).
+    /// </summary>
+    public const int StationaryFallFrames = 3;
+
+    /// <summary>How far, in metres, a sliding placement searches around the requested spot. Retail: 4.0 in
+    /// <c>find_placement_pos</c> (acclient.c:313014).</summary>
+    public const float PlacementSearchDistance = 4.0f;
+
+    /// <summary>Search distance, in metres, for a sphere smaller than <see cref="PlacementSmallRadius"/>. Retail: 2.0
+    /// (acclient.c:313014).</summary>
+    public const float PlacementSmallSearchDistance = 2.0f;
+
+    /// <summary>Spheres below this radius, in metres, search half as many rings. Retail: 0.125 (acclient.c:313014).</summary>
+    public const float PlacementSmallRadius = 0.125f;
+
+    /// <summary>Smallest radius, in metres, used to space the placement rings. Retail: 0.47999999 (acclient.c:313014),
+    /// float bits 0x3EF5C28F.</summary>
+    public const float PlacementMinRadius = 0.47999999f;
+
+    /// <summary>Retail's value of pi in the placement ring count: 3.1415999 (acclient.c:313014), float bits 0x40490FF9.</summary>
+    public const float PlacementPi = 3.1415999f;
+
     /// <summary>Creates a transition whose cell lookups go to <paramref name="cells"/>.</summary>
     /// <exception cref="ArgumentNullException"><paramref name="cells"/> is null.</exception>
     public Transition(ICellSource cells)

@@ -38,6 +38,12 @@ public abstract class TransitionSeam
     {
     }
 
+    /// <summary>Ends the object's collision reports (retail <c>CPhysicsObj::report_collision_end</c>, acclient.c:321712),
+    /// called by <see cref="PhysicsObj.TeleportHook"/>.</summary>
+    public virtual void ReportCollisionEnd(PhysicsObj obj, bool forceEnd)
+    {
+    }
+
     /// <summary>True when a solid <paramref name="obj"/> would overlap another object now
     /// (retail <c>CPhysicsObj::ethereal_check_for_collisions</c>, acclient.c:317831).</summary>
     public virtual bool EtherealCheckForCollisions(PhysicsObj obj) => false;

@@ -23,6 +23,11 @@ public interface IMovementManager
 
     /// <summary>The motion interpreter (retail <c>MovementManager::get_minterp</c>), or null.</summary>
     IMotionInterpreter? MotionInterpreter { get; }
+
+    /// <summary>Cancels a move-to with a weenie error code (retail <c>MovementManager::CancelMoveTo</c>; teleport uses 0x3C).</summary>
+    void CancelMoveTo(uint error)
+    {
+    }
 }
 
 /// <summary>Seam to the motion interpreter's speed queries (retail <c>CMotionInterp</c>).</summary>
@@ -54,6 +59,12 @@ public interface ITargetManager
 {
     /// <summary>Per-step targeting update.</summary>
     void HandleTargetting();
+
+    /// <summary>Drops the current target and tells voyeurs the object teleported (retail <c>ClearTarget</c> +
+    /// <c>NotifyVoyeurOfEvent(Teleported)</c>).</summary>
+    void ClearTarget()
+    {
+    }
 }
 
 /// <summary>Seam to an object's particle manager (retail <c>ParticleManager::UpdateParticles</c>).</summary>

@@ -1,0 +1,253 @@
+using System;
+using System.IO;
+using System.Numerics;
+using AcDream.Core.Physics;
+using BenchmarkDotNet.Attributes;
+
+namespace AcDream.Core.Benchmarks;
+
+/// <summary>
+/// Cost of one retail sweep (<c>CPhysicsObj::transition</c>) of a walker (one sphere, r = 0.5 m, step heights 0.6 m) over
+/// synthetic terrain: flat ground, a walkable slope (rise 27 m per 24 m cell), into a hillside (rise 40 m per cell, a wall to
+/// walkers) and across a landblock edge. "Call" sweeps a 0.2 m move (one step, a 4 m/s walker at 20 Hz); "Step" sweeps a
+/// 10 m move (ceil(10 / 0.5) = 20 steps) and reports the mean per step. The sweep does not change the object, so every
+/// invoke repeats the same sweep.
+/// </summary>
+[MemoryDiagnoser]
+public class SweepBenchmarks
+{
+    private const int LongSteps = 20;
+    private RetailTransition _sweep = null!;
+    private PhysicsObj _flat = null!, _slope = null!, _hill = null!, _edge = null!;
+    private Position _flatTo, _flatFar, _slopeTo, _slopeFar, _hillTo, _hillFar, _edgeTo, _edgeFar;
+
+    /// <summary>Builds the four scenes in one terrain world.</summary>
+    [GlobalSetup]
+    public void Setup()
+    {
+        var table = new float[256];
+        for (int i = 0; i < table.Length; i++)
+        {
+            table[i] = i;
+        }
+
+        var terrain = new TerrainWorld(new LandHeightTable(table));
+        AddBlock(terrain, 0x40, 0x40, (_, _) => 20);
+        AddBlock(terrain, 0x41, 0x40, (_, _) => 20);
+        AddBlock(terrain, 0x50, 0x50, (vx, _) => 10 + 27 * vx);
+        AddBlock(terrain, 0x60, 0x60, (vx, _) => vx <= 4 ? 10 : 10 + 40 * (vx - 4));
+        var world = new PhysicsWorld(0.0);
+        _sweep = new RetailTransition(terrain);
+        world.Transition = _sweep;
+
+        _flat = Walker(world, 1, Pos(0x40, 0x40, 100f, 100f, 20f));
+        _flatTo = Moved(_flat.Position, 0.2f);
+        _flatFar = Moved(_flat.Position, 10f);
+        _slope = Walker(world, 2, Pos(0x50, 0x50, 60f, 100f, (float)(10 + 27.0 / 24.0 * 60.0)));
+        _slopeTo = Moved(_slope.Position, 0.2f);
+        _slopeFar = Moved(_slope.Position, 10f);
+        _hill = Walker(world, 3, Pos(0x60, 0x60, 95.5f, 100f, 10f));
+        _hillTo = Moved(_hill.Position, 0.2f);
+        _hillFar = Moved(_hill.Position, 10f);
+        _edge = Walker(world, 4, Pos(0x40, 0x40, 191.9f, 100f, 20f));
+        _edgeTo = Moved(_edge.Position, 0.2f);
+        _edgeFar = Moved(_edge.Position, 10f);
+    }
+
+    /// <summary>One 0.2 m sweep on flat ground.</summary>
+    [Benchmark]
+    public Transition? FlatCall() => _sweep.Transition(_flat, _flat.Position, _flatTo, false);
+
+    /// <summary>A 10 m sweep on flat ground; mean per step.</summary>
+    [Benchmark(OperationsPerInvoke = LongSteps)]
+    public Transition? FlatStep() => _sweep.Transition(_flat, _flat.Position, _flatFar, false);
+
+    /// <summary>One 0.2 m sweep up a walkable slope.</summary>
+    [Benchmark]
+    public Transition? SlopeCall() => _sweep.Transition(_slope, _slope.Position, _slopeTo, false);
+
+    /// <summary>A 10 m sweep up a walkable slope; mean per step.</summary>
+    [Benchmark(OperationsPerInvoke = LongSteps)]
+    public Transition? SlopeStep() => _sweep.Transition(_slope, _slope.Position, _slopeFar, false);
+
+    /// <summary>One 0.2 m sweep into a too-steep hillside (cliff slide, rejected step).</summary>
+    [Benchmark]
+    public Transition? HillsideCall() => _sweep.Transition(_hill, _hill.Position, _hillTo, false);
+
+    /// <summary>A 10 m sweep into the hillside; mean per step (the sweep stops at the first blocked step).</summary>
+    [Benchmark(OperationsPerInvoke = LongSteps)]
+    public Transition? HillsideStep() => _sweep.Transition(_hill, _hill.Position, _hillFar, false);
+
+    /// <summary>One 0.2 m sweep across a landblock edge (cell change, block offset).</summary>
+    [Benchmark]
+    public Transition? EdgeCall() => _sweep.Transition(_edge, _edge.Position, _edgeTo, false);
+
+    /// <summary>A 10 m sweep across a landblock edge; mean per step.</summary>
+    [Benchmark(OperationsPerInvoke = LongSteps)]
+    public Transition? EdgeStep() => _sweep.Transition(_edge, _edge.Position, _edgeFar, false);
+
+    private static Position Pos(int bx, int by, float x, float y, float z) =>
+        new(LandDefs.LCoordToGid(bx * 8 + (int)(x / 24f), by * 8 + (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, z), 90f));
+
+    private static Position Moved(in Position p, float dx)
+    {
+        Position q = p;
+        q.Frame.Origin = new Vector3(p.Frame.Origin.X + dx, p.Frame.Origin.Y, p.Frame.Origin.Z);
+        return q;
+    }
+
+    private static void AddBlock(TerrainWorld world, int bx, int by, Func<int, int, int> height)
+    {
+        var h = new byte[81];
+        var t = new ushort[81];
+        for (int vx = 0; vx < 9; vx++)
+        {
+            for (int vy = 0; vy < 9; vy++)
+            {
+                h[vx * 9 + vy] = (byte)height(vx, vy);
+                t[vx * 9 + vy] = TerrainTypes.MakeWord(0, 1);
+            }
+        }
+
+        world.AddLandBlock(LandBlock.MakeId(bx, by), h, t);
+    }
+
+    private static PhysicsObj Walker(PhysicsWorld world, uint id, in Position p)
+    {
+        PhysicsObj obj = world.CreateObject(id);
+        var parts = new SimplePartArray(1, 0) { StepUpHeight = 0.6f, StepDownHeight = 0.6f };
+        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
+        obj.PartArray = parts;
+        obj.MovementManager = new BasicMovementManager();
+        if (!obj.EnterWorld(p))
+        {
+            throw new InvalidOperationException("Walker could not be placed.");
+        }
+
+        return obj;
+    }
+}
+
+/// <summary>
+/// One world tick (<c>CPhysics::UseTime</c>) of N walkers on real Dereth terrain through the retail sweep: the Holtburg
+/// 3 × 3 landblocks (0xA8B3-0xAAB5) from ACDREAM_TERRAIN_DIR (landblock_heights_sample.csv), or, without the data, a
+/// synthetic 3 × 3 with random heights (marked in the log). Walkers start at random spots of the centre landblock and walk
+/// 3.12 m/s in circles of 6.24 m (0.5 rad/s), so they stay on the terrain. Mean per world tick (0.05 s).
+/// </summary>
+[MemoryDiagnoser]
+public class WorldSweepBenchmarks
+{
+    private const int Ticks = 10;
+    private const double Dt = 0.05;
+    private PhysicsWorld _world = null!;
+    private double _now;
+
+    /// <summary>Number of walkers.</summary>
+    [Params(1000)]
+    public int N { get; set; }
+
+    /// <summary>Loads the terrain and places the walkers.</summary>
+    [GlobalSetup]
+    public void Setup()
+    {
+        var rnd = new Random(7);
+        TerrainWorld terrain = LoadHoltburg(rnd);
+        _world = new PhysicsWorld(0.0);
+        _world.Transition = new RetailTransition(terrain);
+        int placed = 0;
+        for (int i = 0; placed < N && i < N * 4; i++)
+        {
+            float x = 20f + (float)rnd.NextDouble() * 152f, y = 20f + (float)rnd.NextDouble() * 152f;
+            var p = new Position(LandDefs.LCoordToGid(0xA9 * 8 + (int)(x / 24f), 0xB4 * 8 + (int)(y / 24f)), new Vector3(x, y, 0f));
+            if (!terrain.TryGetTerrainHeight(p, out float z))
+            {
+                continue;
+            }
+
+            p.Frame.Origin = new Vector3(x, y, z);
+            p.Frame.SetHeading((float)(rnd.NextDouble() * 360.0));
+            PhysicsObj obj = _world.CreateObject((uint)(placed + 1));
+            var parts = new SimplePartArray(1, 0)
+            {
+                StepUpHeight = 0.6f,
+                StepDownHeight = 0.6f,
+                SequenceVelocity = new Vector3(0f, 3.12f, 0f),
+                SequenceOmega = new Vector3(0f, 0f, 0.5f),
+            };
+            parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
+            obj.PartArray = parts;
+            obj.MovementManager = new BasicMovementManager();
+            if (obj.EnterWorld(p))
+            {
+                placed++;
+            }
+        }
+
+        _world.ObjectMaintenanceActive = false;
+        _now = 0.0;
+        for (int i = 0; i < 5; i++)
+        {
+            _now += Dt;
+            _world.Tick(_now);
+        }
+    }
+
+    /// <summary>One world tick of all walkers.</summary>
+    [Benchmark(OperationsPerInvoke = Ticks)]
+    public bool Tick()
+    {
+        bool ticked = false;
+        for (int i = 0; i < Ticks; i++)
+        {
+            _now += Dt;
+            ticked = _world.Tick(_now);
+        }
+
+        return ticked;
+    }
+
+    private static TerrainWorld LoadHoltburg(Random rnd)
+    {
+        string? dir = Environment.GetEnvironmentVariable("ACDREAM_TERRAIN_DIR");
+        TerrainWorld world;
+        if (!string.IsNullOrEmpty(dir))
+        {
+            world = new TerrainWorld(TerrainDataFiles.ReadHeightTableCsv(Path.Combine(dir, "land_height_table.csv")));
+            foreach (LandBlockData d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
+            {
+                if (d.BlockId >> 24 is >= 0xA8 and <= 0xAA && ((d.BlockId >> 16) & 0xFF) is >= 0xB3 and <= 0xB5)
+                {
+                    world.AddLandBlock(d.BlockId, d.Height, d.Terrain);
+                }
+            }
+
+            Console.WriteLine("// WorldSweepBenchmarks: real Holtburg terrain from " + dir);
+            return world;
+        }
+
+        Console.WriteLine("// WorldSweepBenchmarks: ACDREAM_TERRAIN_DIR unset, synthetic random terrain");
+        var table = new float[256];
+        for (int i = 0; i < 256; i++)
+        {
+            table[i] = i < 201 ? 2f * i : 400f + (i - 200);
+        }
+
+        world = new TerrainWorld(new LandHeightTable(table));
+        var h = new byte[81];
+        var t = new ushort[81];
+        for (int bx = 0xA8; bx <= 0xAA; bx++)
+        {
+            for (int by = 0xB3; by <= 0xB5; by++)
+            {
+                for (int k = 0; k < 81; k++)
+                {
+                    h[k] = (byte)(40 + rnd.Next(4));
+                }
+
+                world.AddLandBlock(LandBlock.MakeId(bx, by), h, t);
+            }
+        }
+
+        return world;
+    }
+}

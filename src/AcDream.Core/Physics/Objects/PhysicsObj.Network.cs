@@ -1,0 +1,84 @@
+using System;
+
+namespace AcDream.Core.Physics;
+
+public sealed partial class PhysicsObj
+{
+    private readonly ushort[] _updateTimes = new ushort[9];
+
+    /// <summary>Last accepted 16-bit timestamp of <paramref name="stamp"/> (retail <c>update_times</c>).</summary>
+    public ushort GetUpdateTime(PhysicsTimeStamp stamp) => _updateTimes[(int)stamp];
+
+    /// <summary>
+    /// True when <paramref name="newTime"/> is newer than the stored stamp in 16-bit wrap-around order (a difference above
+    /// 0x7FFF means the counter wrapped); a newer stamp is stored.
+    /// </summary>
+    // retail: CPhysicsObj::newer_event (acclient.c:143014)
+    public bool NewerEvent(PhysicsTimeStamp stamp, ushort newTime)
+    {
+        ushort old = _updateTimes[(int)stamp];
+        bool newer = Math.Abs(newTime - old) > 0x7FFF ? newTime < old : old < newTime;
+        if (newer)
+        {
+            _updateTimes[(int)stamp] = newTime;
+        }
+
+        return newer;
+    }
+
+    /// <summary>
+    /// Applies a server position: a stale teleport stamp is ignored; a newer teleport (or an object with no cell) teleports;
+    /// otherwise, only with contact, an object at least 96 m from the player snaps there and a nearer one interpolates.
+    /// </summary>
+    /// <returns>True when the position was used.</returns>
+    /// <exception cref="ArgumentException">The frame is not valid; state unchanged.</exception>
+    // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450)
+    public bool MoveOrTeleport(in Position p, ushort teleportTimestamp, bool contact)
+    {
+        if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
+        {
+            throw new ArgumentException("Position frame must be valid.", nameof(p));
+        }
+
+        ushort stored = _updateTimes[(int)PhysicsTimeStamp.Teleport];
+        bool older = Math.Abs(stored - teleportTimestamp) > 0x7FFF ? stored < teleportTimestamp : teleportTimestamp < stored;
+        if (older)
+        {
+            return false;
+        }
+
+        if (NewerEvent(PhysicsTimeStamp.Teleport, teleportTimestamp) || CellId == 0)
+        {
+            TeleportHook();
+            SetPosition(p, SetPositionFlags.Teleport | SetPositionFlags.Slide | SetPositionFlags.SendPositionEvent);
+            return true;
+        }
+
+        if (!contact)
+        {
+            return false;
+        }
+
+        if (PlayerDistance >= PhysicsGlobals.PlayerActivityDistance)
+        {
+            PositionManager?.StopInterpolating();
+            SetPositionSimple(p, true);
+            return true;
+        }
+
+        InterpolateTo(p, IsMovingTo());
+        return true;
+    }
+
+    /// <summary>Drops every move-to, stickiness, interpolation, constraint and target before a teleport.</summary>
+    // retail: CPhysicsObj::teleport_hook (acclient.c:322236)
+    public void TeleportHook()
+    {
+        MovementManager?.CancelMoveTo(0x3Cu);
+        PositionManager?.UnStick();
+        PositionManager?.StopInterpolating();
+        PositionManager?.UnConstrain();
+        TargetManager?.ClearTarget();
+        World.Transition.ReportCollisionEnd(this, true);
+    }
+}

@@ -1,0 +1,36 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics;
+using Xunit;
+
+namespace AcDream.Core.Tests.Behavior;
+
+public class SweepAllocationTests
+{
+    [Fact]
+    public void TickingWalkersThroughTheRetailSweep_AllocatesNothing_AfterWarmUp()
+    {
+        // Slope, flat part and a landblock edge: every branch of a walking sweep (steps, step down, cell changes).
+        TerrainWorld terrain = SweepScene.Terrain();
+        SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (vx, _) => vx <= 4 ? 20 : 20 + 20 * (vx - 4));
+        SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY + 1, (vx, _) => vx <= 4 ? 20 : 20 + 20 * (vx - 4));
+        PhysicsWorld world = SweepScene.Physics(terrain, out _);
+        var walkers = new PhysicsObj[4];
+        for (int i = 0; i < walkers.Length; i++)
+        {
+            uint cell = SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 3, 7);
+            walkers[i] = SweepScene.Walker(world, new Position(cell, Frame.FromHeading(new Vector3(80f + 3f * i, 185f, 20f), 30f + 20f * i)), id: (uint)(i + 1));
+            SweepScene.SetWalk(walkers[i], new Vector3(0f, 4f, 0f));
+        }
+
+        SweepScene.Run(world, 20);
+        long before = GC.GetAllocatedBytesForCurrentThread();
+        for (int i = 0; i < 100; i++)
+        {
+            world.Tick(world.CurrentTime + SweepScene.Dt);
+        }
+
+        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+        Assert.Equal(0, allocated);
+    }
+}

@@ -1,0 +1,68 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics;
+
+namespace AcDream.Core.Tests.Determinism;
+
+/// <summary>FNV-1a 64 over the exact bits of physics state, for golden-hash determinism tests.</summary>
+internal struct StateHasher
+{
+    private ulong _h;
+
+    public StateHasher()
+    {
+        _h = 14695981039346656037UL;
+    }
+
+    public readonly ulong Value => _h;
+
+    public void Add(uint v)
+    {
+        for (int i = 0; i < 4; i++)
+        {
+            _h ^= (byte)(v >> (8 * i));
+            _h *= 1099511628211UL;
+        }
+    }
+
+    public void Add(ulong v)
+    {
+        Add((uint)v);
+        Add((uint)(v >> 32));
+    }
+
+    public void Add(float f) => Add((uint)BitConverter.SingleToInt32Bits(f));
+
+    public void Add(double d) => Add((ulong)BitConverter.DoubleToInt64Bits(d));
+
+    public void Add(Vector3 v)
+    {
+        Add(v.X);
+        Add(v.Y);
+        Add(v.Z);
+    }
+
+    public void Add(in Frame f)
+    {
+        Add(f.Origin);
+        Add(f.Qw);
+        Add(f.Qx);
+        Add(f.Qy);
+        Add(f.Qz);
+        Add(f.M0);
+        Add(f.M1);
+        Add(f.M2);
+        Add(f.M3);
+        Add(f.M4);
+        Add(f.M5);
+        Add(f.M6);
+        Add(f.M7);
+        Add(f.M8);
+    }
+
+    public void Add(in Position p)
+    {
+        Add(p.ObjCellId);
+        Add(p.Frame);
+    }
+}

@@ -1,0 +1,115 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using AcDream.Core.Physics;
+using Xunit;
+
+namespace AcDream.Core.Tests;
+
+/// <summary>
+/// A fact that needs the real Dereth terrain fixtures (heightfield and land height table). They are not in the repository:
+/// the folder comes from the environment variable <c>ACDREAM_TERRAIN_DIR</c> (.ci/run sets it to ../shared/data/ac-terrain),
+/// and the test is skipped, naming the variable, when it is unset.
+/// </summary>
+public sealed class TerrainDataFactAttribute : FactAttribute
+{
+    /// <summary>Skips the test when <see cref="TerrainTestData.Variable"/> is unset.</summary>
+    public TerrainDataFactAttribute()
+    {
+        if (string.IsNullOrEmpty(Environment.GetEnvironmentVariable(TerrainTestData.Variable)))
+        {
+            Skip = $"Real terrain data not available: set the environment variable {TerrainTestData.Variable} to the ac-terrain folder (../shared/data/ac-terrain).";
+        }
+    }
+}
+
+/// <summary>Shared terrain scene builders: the real fixtures (loaded once) and small synthetic landblocks.</summary>
+internal static class TerrainTestData
+{
+    public const string Variable = "ACDREAM_TERRAIN_DIR";
+
+    private static readonly Lazy<LandHeightTable> RealTableLazy = new(() =>
+        TerrainDataFiles.ReadHeightTableCsv(Path.Combine(Dir, "land_height_table.csv")));
+
+    private static readonly Lazy<IReadOnlyList<LandBlockData>> SampleLazy = new(() =>
+        TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(Dir, "landblock_heights_sample.csv")));
+
+    private static readonly Lazy<TerrainImage> ImageLazy = new(() => TerrainImage.Load(Path.Combine(Dir, "terrain.png")));
+
+    public static string Dir => Environment.GetEnvironmentVariable(Variable)
+        ?? throw new InvalidOperationException($"{Variable} is not set.");
+
+    /// <summary>The real land height table.</summary>
+    public static LandHeightTable RealTable => RealTableLazy.Value;
+
+    /// <summary>The 12 sample landblocks of landblock_heights_sample.csv.</summary>
+    public static IReadOnlyList<LandBlockData> Sample => SampleLazy.Value;
+
+    /// <summary>The whole heightfield (terrain.png).</summary>
+    public static TerrainImage Image => ImageLazy.Value;
+
+    /// <summary>The sample landblock with id 0xXXYYFFFF.</summary>
+    public static LandBlockData SampleBlock(uint blockId)
+    {
+        foreach (LandBlockData d in Sample)
+        {
+            if (d.BlockId == blockId)
+            {
+                return d;
+            }
+        }
+
+        throw new InvalidOperationException($"Landblock 0x{blockId:X8} is not in the sample.");
+    }
+
+    /// <summary>A world holding the given sample landblocks.</summary>
+    public static TerrainWorld SampleWorld(params uint[] blockIds)
+    {
+        var world = new TerrainWorld(RealTable);
+        foreach (uint id in blockIds)
+        {
+            LandBlockData d = SampleBlock(id);
+            world.AddLandBlock(d.BlockId, d.Height, d.Terrain);
+        }
+
+        return world;
+    }
+
+    /// <summary>A synthetic table: index i maps to i metres (test-only; the real table is data).</summary>
+    public static LandHeightTable IdentityTable()
+    {
+        var h = new float[256];
+        for (int i = 0; i < h.Length; i++)
+        {
+            h[i] = i;
+        }
+
+        return new LandHeightTable(h);
+    }
+
+    /// <summary>81 height indices from a function of the vertex (vx, vy).</summary>
+    public static byte[] Heights(Func<int, int, int> f)
+    {
+        var h = new byte[81];
+        for (int vx = 0; vx < 9; vx++)
+        {
+            for (int vy = 0; vy < 9; vy++)
+            {
+                h[vx * 9 + vy] = (byte)f(vx, vy);
+            }
+        }
+
+        return h;
+    }
+
+    /// <summary>81 terrain words, all of terrain type <paramref name="type"/>.</summary>
+    public static ushort[] Terrain(int type)
+    {
+        var t = new ushort[81];
+        Array.Fill(t, TerrainTypes.MakeWord(0, type));
+        return t;
+    }
+
+    /// <summary>Sets vertex (vx, vy) of a terrain array to <paramref name="type"/>.</summary>
+    public static void SetType(ushort[] terrain, int vx, int vy, int type) => terrain[vx * 9 + vy] = TerrainTypes.MakeWord(0, type);
+}
