@@ -112,3 +112,71 @@ internal static class BspScene
     /// <summary>The centre of the walker's single sphere (radius r, resting on its origin).</summary>
     public static Vector3 SphereCenter(PhysicsObj obj, float r) => obj.Position.Frame.Origin + new Vector3(0f, 0f, r);
 }
+
+/// <summary>
+/// A one-room building at <see cref="Origin"/>: interior x 0..6, y 0..6, z 0..3 (local), walls 0.2 m thick, a 2 m wide,
+/// 2.5 m high door in the south wall (x 2..4), and behind the north wall a corridor cell (x 2..4, y 6.2..12) reached
+/// through a 2 m opening. Cells: the room 0x80800100 and the corridor 0x80800101.
+/// </summary>
+internal static class RoomScene
+{
+    /// <summary>The building's origin in the landblock.</summary>
+    public static readonly Vector3 Origin = new(100f, 100f, BspScene.Ground);
+
+    /// <summary>The room's cell id.</summary>
+    public static readonly uint Room = BspScene.IndoorCell(0);
+
+    /// <summary>The corridor's cell id.</summary>
+    public static readonly uint Corridor = BspScene.IndoorCell(1);
+
+    /// <summary>Builds the scene into <paramref name="cells"/>.</summary>
+    public static void Build(WorldCells cells)
+    {
+        // Shell (outdoor collision), local to the origin.
+        var shell = new List<Polygon>();
+        BspScene.AddBox(shell, new(-0.2f, -0.2f, 0f), new(2f, 0f, 3f));     // south wall, west of the door
+        BspScene.AddBox(shell, new(4f, -0.2f, 0f), new(6.2f, 0f, 3f));      // south wall, east of the door
+        BspScene.AddBox(shell, new(2f, -0.2f, 2.5f), new(4f, 0f, 3f));      // lintel
+        BspScene.AddBox(shell, new(-0.2f, 6f, 0f), new(2f, 6.2f, 3f));      // north wall, west of the opening
+        BspScene.AddBox(shell, new(4f, 6f, 0f), new(6.2f, 6.2f, 3f));       // north wall, east of the opening
+        BspScene.AddBox(shell, new(-0.2f, 0f, 0f), new(0f, 6f, 3f));        // west wall
+        BspScene.AddBox(shell, new(6f, 0f, 0f), new(6.2f, 6f, 3f));         // east wall
+        BspScene.AddBox(shell, new(1.8f, 6.2f, 0f), new(2f, 12.2f, 3f));    // corridor, west wall
+        BspScene.AddBox(shell, new(4f, 6.2f, 0f), new(4.2f, 12.2f, 3f));    // corridor, east wall
+        BspScene.AddBox(shell, new(1.8f, 12f, 0f), new(4.2f, 12.2f, 3f));   // corridor, end wall
+        BspScene.AddBuilding(cells, Origin, shell, new BldPortal(Room, 0));
+
+        // Room: floor over the room and the door's threshold, inward wall faces, the door and corridor portals.
+        var room = new List<Polygon>();
+        room.Add(BspScene.Quad(new(0f, -0.2f, 0f), new(6f, -0.2f, 0f), new(6f, 6f, 0f), new(0f, 6f, 0f)));          // floor, +z
+        room.Add(BspScene.Quad(new(0f, 6f, 0f), new(2f, 6f, 0f), new(2f, 6f, 3f), new(0f, 6f, 3f)));               // north, -y
+        room.Add(BspScene.Quad(new(4f, 6f, 0f), new(6f, 6f, 0f), new(6f, 6f, 3f), new(4f, 6f, 3f)));               // north, -y
+        room.Add(BspScene.Quad(new(0f, 0f, 0f), new(0f, 0f, 3f), new(2f, 0f, 3f), new(2f, 0f, 0f)));               // south, +y
+        room.Add(BspScene.Quad(new(4f, 0f, 0f), new(4f, 0f, 3f), new(6f, 0f, 3f), new(6f, 0f, 0f)));               // south, +y
+        room.Add(BspScene.Quad(new(0f, 0f, 0f), new(0f, 6f, 0f), new(0f, 6f, 3f), new(0f, 0f, 3f)));               // west, +x
+        room.Add(BspScene.Quad(new(6f, 0f, 0f), new(6f, 0f, 3f), new(6f, 6f, 3f), new(6f, 6f, 0f)));               // east, -x
+        Polygon door = BspScene.Quad(new(2f, -0.2f, 0f), new(4f, -0.2f, 0f), new(4f, -0.2f, 2.5f), new(2f, -0.2f, 2.5f), 100);
+        Polygon roomToCorridor = BspScene.Quad(new(2f, 6f, 0f), new(4f, 6f, 0f), new(4f, 6f, 3f), new(2f, 6f, 3f), 101);
+        var roomStruct = new CellStruct(BspBuilder.Build(room.ToArray()),
+            BspBuilder.BuildCell(BspBuilder.BoxCellPlanes(new(0f, -0.2f, -0.5f), new(6f, 6f, 3f))), new[] { door, roomToCorridor });
+        cells.AddEnvCell(new EnvCell(Room, new Frame(Origin, Quaternion.Identity), roomStruct, new[]
+        {
+            new CellPortal(CellPortal.OutsideCellId, door, 0),
+            new CellPortal(Corridor, roomToCorridor, 1, 0),
+        }));
+
+        // Corridor: y 6..12 (its region starts at the room's north wall face), x 2..4, floor, side and end walls.
+        var corr = new List<Polygon>();
+        corr.Add(BspScene.Quad(new(2f, 6f, 0f), new(4f, 6f, 0f), new(4f, 12f, 0f), new(2f, 12f, 0f)));              // floor, +z
+        corr.Add(BspScene.Quad(new(2f, 6f, 0f), new(2f, 12f, 0f), new(2f, 12f, 3f), new(2f, 6f, 3f)));              // west, +x
+        corr.Add(BspScene.Quad(new(4f, 6f, 0f), new(4f, 6f, 3f), new(4f, 12f, 3f), new(4f, 12f, 0f)));              // east, -x
+        corr.Add(BspScene.Quad(new(2f, 12f, 0f), new(4f, 12f, 0f), new(4f, 12f, 3f), new(2f, 12f, 3f)));            // end, -y
+        Polygon corridorToRoom = BspScene.Quad(new(2f, 6f, 0f), new(4f, 6f, 0f), new(4f, 6f, 3f), new(2f, 6f, 3f), 200);
+        var corrStruct = new CellStruct(BspBuilder.Build(corr.ToArray()),
+            BspBuilder.BuildCell(BspBuilder.BoxCellPlanes(new(2f, 6f, -0.5f), new(4f, 12f, 3f))), new[] { corridorToRoom });
+        cells.AddEnvCell(new EnvCell(Corridor, new Frame(Origin, Quaternion.Identity), corrStruct, new[]
+        {
+            new CellPortal(Room, corridorToRoom, 0, 1),
+        }));
+    }
+}
