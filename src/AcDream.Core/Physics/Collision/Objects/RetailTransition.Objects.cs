@@ -12,8 +12,8 @@ public sealed partial class RetailTransition
     public IObjectCollisionListener? ObjectCollisionListener { get; set; }
 
     /// <inheritdoc />
-    /// <remarks>An object with a physics BSP is shadowed in its own cell only: the parts' cross-cell search
-    /// (<c>CPartArray::calc_cross_cells_static</c>) belongs to the BSP module.</remarks>
+    /// <remarks>An object with a physics BSP is shadowed in its own cell and the cells of its sorting sphere (retail: its
+    /// parts' bounding boxes).</remarks>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503), the shadow update at its end
     public override void UpdateCellShadows(PhysicsObj obj)
     {
@@ -30,8 +30,8 @@ public sealed partial class RetailTransition
     }
 
     /// <summary>
-    /// Re-shadows <paramref name="obj"/> where it stands: its own cell for an object with a physics BSP, else the cells its
-    /// cylinder spheres (or its sorting sphere) overlap.
+    /// Re-shadows <paramref name="obj"/> where it stands: in the cells its cylinder spheres overlap, or, without them (or
+    /// with a physics BSP), the cells of its sorting sphere (plus its own cell for a BSP object).
     /// </summary>
     // retail: CPhysicsObj::calc_cross_cells (acclient.c:322446)
     public void CalcCrossCells(PhysicsObj obj)
@@ -40,32 +40,31 @@ public sealed partial class RetailTransition
         CellArray ca = _crossCells;
         ca.Clear();
         Position p = obj.Position;
-        if ((obj.State & PhysicsState.HasPhysicsBsp) != 0)
+        IPartCollision? parts = obj.PartArray as IPartCollision;
+        ReadOnlySpan<CylSphere> cyl = parts is null ? default : parts.CylSpheres;
+        Span<Sphere> spheres = stackalloc Sphere[10];
+        int n = 0;
+        if ((obj.State & PhysicsState.HasPhysicsBsp) == 0 && cyl.Length != 0)
         {
-            // retail: CPhysicsObj::find_bbox_cell_list (acclient.c:318275): the own cell, then the parts' cells (BSP module).
-            ca.AddCell(obj.CellId, Cells.GetVisible(obj.CellId));
+            n = cyl.Length <= 10 ? cyl.Length : 10;
+            for (int i = 0; i < n; i++)
+            {
+                spheres[i] = new Sphere(p.LocalToGlobal(p, cyl[i].LowPt), cyl[i].Radius);
+            }
         }
         else
         {
-            IPartCollision? parts = obj.PartArray as IPartCollision;
-            ReadOnlySpan<CylSphere> cyl = parts is null ? default : parts.CylSpheres;
-            int n = cyl.Length <= 10 ? cyl.Length : 10;
-            Span<Sphere> spheres = stackalloc Sphere[10];
-            if (n != 0)
-            {
-                for (int i = 0; i < n; i++)
-                {
-                    spheres[i] = new Sphere(p.LocalToGlobal(p, cyl[i].LowPt), cyl[i].Radius);
-                }
-            }
-            else
-            {
-                Sphere sorting = parts is null ? Sphere.Dummy : parts.SortingSphere;
-                spheres[0] = new Sphere(p.LocalToGlobal(p, sorting.Center), sorting.Radius);
-                n = 1;
-            }
+            // Retail: an object with a physics BSP is listed by its parts' bounding boxes (find_bbox_cell_list,
+            // acclient.c:318275, via the cells' part tests); the port uses the sorting sphere for it too (divergences.md).
+            Sphere sorting = parts is null ? Sphere.Dummy : parts.SortingSphere;
+            spheres[0] = new Sphere(p.LocalToGlobal(p, sorting.Center), sorting.Radius);
+            n = 1;
+        }
 
-            CellList.FindCellList(Cells, p, spheres[..n], ca, false, null);
+        CellList.FindCellList(Cells, p, spheres[..n], ca, false, null);
+        if ((obj.State & PhysicsState.HasPhysicsBsp) != 0)
+        {
+            ca.AddCell(obj.CellId, Cells.GetVisible(obj.CellId));
         }
 
         obj.RemoveShadowsFromCells();
