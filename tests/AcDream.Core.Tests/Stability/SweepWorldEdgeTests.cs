@@ -45,3 +45,32 @@ public class SweepWorldEdgeTests
         Assert.False(obj.IsActive);
     }
 }
+
+public class SweepBadInputTests
+{
+    [Fact]
+    public void Transition_NaNTarget_Throws_AndLeavesThePoolFree()
+    {
+        TerrainWorld terrain = SweepScene.Terrain();
+        SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 20);
+        PhysicsWorld world = SweepScene.Physics(terrain, out RetailTransition sweep);
+        PhysicsObj obj = SweepScene.Walker(world, new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 4), new Vector3(100f, 100f, 20f)));
+        Position bad = obj.Position;
+        bad.Frame.Origin = new Vector3(float.NaN, 100f, 20f);
+        Position before = obj.Position;
+        Assert.Throws<System.ArgumentException>(() => sweep.Transition(obj, obj.Position, bad, false));
+        Assert.Equal(0, sweep.Pool.Level);
+        Assert.Equal(before, obj.Position);
+    }
+
+    [Fact]
+    public void CellArray_RemoveOutOfRange_Throws()
+    {
+        var a = new CellArray();
+        a.AddCell(1u, null);
+        Assert.Throws<System.ArgumentOutOfRangeException>(() => a.RemoveCell(1));
+        Assert.Equal(1, a.NumCells);
+        a.RemoveCell(0);
+        Assert.Equal(0, a.NumCells);
+    }
+}
