@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics;
 using AcDream.Core.Tests.Behavior;
@@ -58,6 +59,12 @@ public class FindObjCollisionsRulesTests
         Assert.Equal(TransitionState.Adjusted, s1);
         Assert.Equal(solid, t1.CollisionInfo.LastCollidedObject);
         Assert.False(t1.CollisionInfo.CollidedWithEnvironment);
+        // land_on_sphere: set_collide (backup of the check position, walk_interp = 1) and walkable_allowance = z_for_landing_0
+        // = 0.0871557f (acclient_data.h:2442).
+        Assert.True(t1.SpherePath.Collide);
+        Assert.Equal(1f, t1.SpherePath.WalkInterp);
+        Assert.Equal(0.0871557f, t1.SpherePath.WalkableAllowance);
+        Assert.Equal(BitConverter.SingleToInt32Bits(0.0871557f), BitConverter.SingleToInt32Bits(t1.SpherePath.WalkableAllowance));
 
         var (s2, t2) = Hit(sweep, mover, rock, ObjectInfoState.None);
         Assert.Equal(TransitionState.Adjusted, s2);
