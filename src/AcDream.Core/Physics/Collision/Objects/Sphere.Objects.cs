@@ -267,8 +267,9 @@ public partial struct Sphere
 
         float lift = (float)(amt * t);
         double inv = 1.0 / r;
-        var n = new Vector3((float)(inv * disp.X), (float)(inv * disp.Y), (float)(((double)lift + disp.Z) * inv));
-        if (n.Z <= (double)path.WalkableAllowance)
+        double nz = ((double)lift + disp.Z) * inv;
+        var n = new Vector3((float)(inv * disp.X), (float)(inv * disp.Y), (float)nz);
+        if (nz <= path.WalkableAllowance)
         {
             return TransitionState.Ok;
         }
