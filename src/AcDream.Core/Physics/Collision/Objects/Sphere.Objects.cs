@@ -428,13 +428,14 @@ public partial struct Sphere
 
         float oy = (float)(movement.Y * t);
         float oz = (float)(movement.Z * t);
-        var offset = new Vector3((float)(movement.X * t - movement.X), oy - movement.Y, oz - movement.Z);
-        double px = (double)offset.X + checkPos.Center.X;
-        double py = (double)offset.Y + checkPos.Center.Y;
-        double pz = (double)offset.Z + checkPos.Center.Z;
-        float hx = (float)px - Center.X;
-        double hy = py - Center.Y;
-        double hz = pz - Center.Z;
+        double bx = movement.X * t - movement.X;
+        double bz = (double)oz - movement.Z;
+        double by = (double)oy - movement.Y;
+        var offset = new Vector3((float)bx, (float)by, (float)bz);
+        float hx = (float)(bx + checkPos.Center.X);
+        hx -= Center.X;
+        float hy = (float)(by + checkPos.Center.Y - Center.Y);
+        double hz = (double)offset.Z + checkPos.Center.Z - Center.Z;
         double inv = 1.0 / r;
         collisions.SetCollisionNormal(new Vector3((float)(hx * inv), (float)(hy * inv), (float)(hz * inv)));
         path.AddOffsetToCheckPos(offset);
