@@ -58,18 +58,27 @@ internal static class BspScene
     /// Places a building whose shell is <paramref name="shell"/> (local to <paramref name="origin"/>, identity rotation)
     /// on every land cell its bounding box covers (with a 1 m margin), with doors <paramref name="portals"/>.
     /// </summary>
-    public static BuildingObj AddBuilding(WorldCells cells, Vector3 origin, List<Polygon> shell, params BldPortal[] portals)
+    public static BuildingObj AddBuilding(WorldCells cells, Vector3 origin, List<Polygon> shell, params BldPortal[] portals) =>
+        AddBuilding(cells, new Frame(origin, Quaternion.Identity), 1f, shell, portals);
+
+    /// <summary>
+    /// Places a building whose shell is <paramref name="shell"/> in part space: a part point p lies at
+    /// <c>frame.LocalToGlobal(p * scale)</c>. It is attached to the land cells under its bounding box (1 m margin).
+    /// </summary>
+    public static BuildingObj AddBuilding(WorldCells cells, in Frame frame, float scale, List<Polygon> shell, params BldPortal[] portals)
     {
         BspTree bsp = BspBuilder.Build(shell.ToArray());
-        var part = new PhysicsPart(new GfxObjPhysics(bsp), new Position(OutdoorCell(origin.X, origin.Y), new Frame(origin, Quaternion.Identity)), Vector3.One);
+        Vector3 origin = frame.Origin;
+        var part = new PhysicsPart(new GfxObjPhysics(bsp), new Position(OutdoorCell(origin.X, origin.Y), frame), new Vector3(scale));
         var building = new BuildingObj(part, portals);
         Vector3 min = new(float.MaxValue), max = new(float.MinValue);
         foreach (Polygon p in shell)
         {
             foreach (Vector3 v in p.Vertices)
             {
-                min = Vector3.Min(min, v + origin);
-                max = Vector3.Max(max, v + origin);
+                Vector3 g = frame.LocalToGlobal(v * scale);
+                min = Vector3.Min(min, g);
+                max = Vector3.Max(max, g);
             }
         }
 
