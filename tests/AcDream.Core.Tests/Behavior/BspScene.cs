@@ -118,6 +118,26 @@ internal static class BspScene
         return MathF.Sqrt(dx * dx + dy * dy + dz * dz);
     }
 
+    /// <summary>
+    /// A walker with two spheres of radius <paramref name="r"/>: feet (centre (0, 0, r)) and head (centre (0, 0, r + 1)).
+    /// Default state minus EDGE_SLIDE; step heights 0.4.
+    /// </summary>
+    public static PhysicsObj TwoSphereWalker(PhysicsWorld world, in Position p, float r = 0.5f, uint id = 1)
+    {
+        PhysicsObj obj = world.CreateObject(id);
+        var parts = new SimplePartArray(1, 0) { StepUpHeight = 0.4f, StepDownHeight = 0.4f };
+        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, r), r), new Sphere(new Vector3(0f, 0f, r + 1f), r) });
+        obj.PartArray = parts;
+        obj.MovementManager = new BasicMovementManager();
+        obj.SetState((PhysicsState)PhysicsGlobals.DefaultState & ~PhysicsState.EdgeSlide);
+        if (!obj.EnterWorld(p))
+        {
+            throw new InvalidOperationException("The walker could not enter the world.");
+        }
+
+        return obj;
+    }
+
     /// <summary>The centre of the walker's single sphere (radius r, resting on its origin).</summary>
     public static Vector3 SphereCenter(PhysicsObj obj, float r) => obj.Position.Frame.Origin + new Vector3(0f, 0f, r);
 }
