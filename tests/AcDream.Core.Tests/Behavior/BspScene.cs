@@ -58,18 +58,27 @@ internal static class BspScene
     /// Places a building whose shell is <paramref name="shell"/> (local to <paramref name="origin"/>, identity rotation)
     /// on every land cell its bounding box covers (with a 1 m margin), with doors <paramref name="portals"/>.
     /// </summary>
-    public static BuildingObj AddBuilding(WorldCells cells, Vector3 origin, List<Polygon> shell, params BldPortal[] portals)
+    public static BuildingObj AddBuilding(WorldCells cells, Vector3 origin, List<Polygon> shell, params BldPortal[] portals) =>
+        AddBuilding(cells, new Frame(origin, Quaternion.Identity), 1f, shell, portals);
+
+    /// <summary>
+    /// Places a building whose shell is <paramref name="shell"/> in part space: a part point p lies at
+    /// <c>frame.LocalToGlobal(p * scale)</c>. It is attached to the land cells under its bounding box (1 m margin).
+    /// </summary>
+    public static BuildingObj AddBuilding(WorldCells cells, in Frame frame, float scale, List<Polygon> shell, params BldPortal[] portals)
     {
         BspTree bsp = BspBuilder.Build(shell.ToArray());
-        var part = new PhysicsPart(new GfxObjPhysics(bsp), new Position(OutdoorCell(origin.X, origin.Y), new Frame(origin, Quaternion.Identity)), Vector3.One);
+        Vector3 origin = frame.Origin;
+        var part = new PhysicsPart(new GfxObjPhysics(bsp), new Position(OutdoorCell(origin.X, origin.Y), frame), new Vector3(scale));
         var building = new BuildingObj(part, portals);
         Vector3 min = new(float.MaxValue), max = new(float.MinValue);
         foreach (Polygon p in shell)
         {
             foreach (Vector3 v in p.Vertices)
             {
-                min = Vector3.Min(min, v + origin);
-                max = Vector3.Max(max, v + origin);
+                Vector3 g = frame.LocalToGlobal(v * scale);
+                min = Vector3.Min(min, g);
+                max = Vector3.Max(max, g);
             }
         }
 
@@ -107,6 +116,26 @@ internal static class BspScene
         float dy = MathF.Max(MathF.Max(min.Y - p.Y, 0f), p.Y - max.Y);
         float dz = MathF.Max(MathF.Max(min.Z - p.Z, 0f), p.Z - max.Z);
         return MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /// <summary>
+    /// A walker with two spheres of radius <paramref name="r"/>: feet (centre (0, 0, r)) and head (centre (0, 0, r + 1)).
+    /// Default state minus EDGE_SLIDE; step heights 0.4.
+    /// </summary>
+    public static PhysicsObj TwoSphereWalker(PhysicsWorld world, in Position p, float r = 0.5f, uint id = 1)
+    {
+        PhysicsObj obj = world.CreateObject(id);
+        var parts = new SimplePartArray(1, 0) { StepUpHeight = 0.4f, StepDownHeight = 0.4f };
+        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, r), r), new Sphere(new Vector3(0f, 0f, r + 1f), r) });
+        obj.PartArray = parts;
+        obj.MovementManager = new BasicMovementManager();
+        obj.SetState((PhysicsState)PhysicsGlobals.DefaultState & ~PhysicsState.EdgeSlide);
+        if (!obj.EnterWorld(p))
+        {
+            throw new InvalidOperationException("The walker could not enter the world.");
+        }
+
+        return obj;
     }
 
     /// <summary>The centre of the walker's single sphere (radius r, resting on its origin).</summary>

@@ -79,4 +79,24 @@ public class IndoorTests
         Assert.True(obj.Position.Frame.Origin.X >= 106f - R - 0.1f - 0.001f);
         Assert.Equal(RoomScene.Room, obj.Position.ObjCellId);
     }
+
+    [Fact]
+    public void EnteringTheWorldInsideTheRoom_PlacesTheObjectInTheIndoorCell()
+    {
+        WorldCells cells = BspScene.FlatWorld();
+        RoomScene.Build(cells);
+        PhysicsWorld world = BspScene.Physics(cells);
+        // Requested in the room's cell at local (3, 3): placed there, standing on the room's floor (z = 20).
+        var p = new Position(RoomScene.Room, Frame.FromHeading(RoomScene.Origin + new Vector3(3f, 3f, 0f), 0f));
+        PhysicsObj obj = SweepScene.Walker(world, p, R);
+        Assert.Equal(RoomScene.Room, obj.Position.ObjCellId);
+        Assert.Equal(BspScene.Ground, obj.Position.Frame.Origin.Z, 3);
+        Assert.True((obj.TransientState & TransientState.Contact) != 0);
+
+        // Requested with the room's id but at a corridor point (local (3, 9)): the portal neighbour that contains the
+        // sphere's centre is chosen.
+        var q = new Position(RoomScene.Room, Frame.FromHeading(RoomScene.Origin + new Vector3(3f, 9f, 0f), 0f));
+        PhysicsObj obj2 = SweepScene.Walker(world, q, R, id: 2);
+        Assert.Equal(RoomScene.Corridor, obj2.Position.ObjCellId);
+    }
 }

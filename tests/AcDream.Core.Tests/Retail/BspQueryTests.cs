@@ -178,4 +178,32 @@ public class BspQueryTests
         Assert.Equal(TransitionState.Ok, tree.FindCollisions(t, 1f));
         Assert.False(path.NegPolyHit);
     }
+
+    [Fact]
+    public void FindCollisions_ClippedPath_CollidesOrWithPerfectClipBacksOffToTheTouchingPoint()
+    {
+        BspTree tree = BspBuilder.Build(new[] { Square() });
+        var t = new Transition(new TerrainWorld(new LandHeightTable(new float[LandHeightTable.Count])));
+        SpherePath path = t.SpherePath;
+        path.InitSphere(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) }, 1f);
+        path.LocalSpacePos = new Position(0x80800001u, Vector3.Zero);
+        path.CheckPos = new Position(0x80800001u, new Vector3(0.5f, 0.5f, -0.3f));
+        path.CacheGlobalSphere();
+        // The sphere moves from centre z = 2 down to z = 0.2 (movement -1.8), into the square's face.
+        path.LocalSpaceSphere[0] = new Sphere(new Vector3(0.5f, 0.5f, 0.2f), 0.5f);
+        path.LocalSpaceCurrCenter[0] = new Vector3(0.5f, 0.5f, 2f);
+
+        // PATH_CLIPPED without PERFECT_CLIP: collide with the polygon's normal.
+        t.ObjectInfo.State = ObjectInfoState.PathClipped;
+        Assert.Equal(TransitionState.Collided, tree.FindCollisions(t, 1f));
+        Assert.Equal(new Vector3(0f, 0f, 1f), t.CollisionInfo.CollisionNormal);
+
+        // With PERFECT_CLIP: adjust_sphere_to_poly gives t = (0.5 - 2) / -1.8 = 0.8333 (centre z 0.5, touching, no hit:
+        // the lower bound); the bisection only narrows the upper bound (0.9167, 0.875, 0.854, 0.84375: all hit) until the
+        // bracket is under 0.02, and the sphere ends at the lower bound: z 0.5. The check position moves by 0.5 - 0.2 = 0.3.
+        t.ObjectInfo.State = ObjectInfoState.PathClipped | ObjectInfoState.PerfectClip;
+        Assert.Equal(TransitionState.Adjusted, tree.FindCollisions(t, 1f));
+        Assert.Equal(0f, path.CheckPos.Frame.Origin.Z, 5);
+        Assert.Equal(new Vector3(0f, 0f, 1f), t.CollisionInfo.CollisionNormal);
+    }
 }
