@@ -76,6 +76,24 @@ public class FindObjCollisionsRulesTests
     }
 
     [Fact]
+    public void IgnoreCreatures_PassesCreaturesAndMissiles_NotPlainObjects()
+    {
+        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsObj mover = Ball(world, 1, 50f);
+        PhysicsObj creature = Ball(world, 2, 100f, weenie: WeenieTraits.Creature);
+        PhysicsObj missile = Ball(world, 3, 110f);
+        PhysicsObj plain = Ball(world, 4, 120f);
+        // Retail's is_creature is "MISSILE or the weenie says creature" (acclient.c:316158).
+        missile.SetState(missile.State | PhysicsState.Missile);
+        var (s1, t1) = Hit(sweep, mover, creature, ObjectInfoState.IgnoreCreatures);
+        Assert.Equal(TransitionState.Ok, s1);
+        Assert.Equal(creature, t1.CollisionInfo.CollideObjects[0]);
+        Assert.False(t1.CollisionInfo.CollisionNormalValid);
+        Assert.Equal(TransitionState.Ok, Hit(sweep, mover, missile, ObjectInfoState.IgnoreCreatures).State);
+        Assert.NotEqual(TransitionState.Ok, Hit(sweep, mover, plain, ObjectInfoState.IgnoreCreatures).State);
+    }
+
+    [Fact]
     public void Viewer_PassesCreatures()
     {
         PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
