@@ -52,4 +52,30 @@ public class CreatureCollisionTests
         // Retail quirk (acclient.c:359156): the contact plane on an object's sphere is recorded as water.
         Assert.True((c.TransientState & TransientState.WaterContact) != 0);
     }
+
+    [Fact]
+    public void Creature_FallingOntoACreature_SlidesOffAndLandsBesideIt()
+    {
+        PhysicsWorld world = ObjectScene.Flat(out _);
+        PhysicsObj a = ObjectScene.Creature(world, 2, ObjectScene.At(100f, 100f));
+        // Falls from 3 m, 0.2 m off the other's axis. A creature's sphere is no platform: the landing request
+        // (land_on_sphere) is answered OK for a creature (acclient.c:359156, is_creature), the collide request then fails
+        // (no walkable contact) and the step collides with the normal from the other's centre; the faller bounces and slides
+        // off sideways (+x, away from the other's centre) and lands on the ground beside it.
+        PhysicsObj b = ObjectScene.Creature(world, 1, ObjectScene.At(100.2f, 100f, 23f));
+
+        SweepScene.Run(world, 80, _ =>
+        {
+            // Never inside the other: sphere centres (0.5 above each origin) at least radsum = 0.9998 apart.
+            Vector3 d = b.Position.Frame.Origin - a.Position.Frame.Origin;
+            Assert.True(d.Length() >= 0.9998f - 1e-4f, $"penetration: {d.Length()}");
+        });
+
+        Vector3 o = b.Position.Frame.Origin;
+        Assert.Equal(ObjectScene.GroundZ, o.Z);
+        Assert.True(o.X > 101f);
+        Assert.Equal(100f, o.Y, 3);
+        Assert.True((b.TransientState & TransientState.OnWalkable) != 0);
+        Assert.Equal(new Vector3(100f, 100f, 20f), a.Position.Frame.Origin);
+    }
 }
