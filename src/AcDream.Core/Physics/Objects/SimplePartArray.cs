@@ -8,7 +8,7 @@ namespace AcDream.Core.Physics;
 /// list, which moves the local frame only by the sequence's own velocity and omega (<c>CSequence::apply_physics</c>).
 /// It records the visual values that hooks apply so a client (or a test) can read them.
 /// </summary>
-public sealed class SimplePartArray : IPartArray
+public sealed partial class SimplePartArray : IPartArray
 {
     private readonly float[] _partTranslucency;
     private readonly float[] _partLuminosity;
