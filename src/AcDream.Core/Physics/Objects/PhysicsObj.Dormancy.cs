@@ -228,8 +228,21 @@ public sealed partial class PhysicsObj
         Frame f = _position.Frame;
         Frame again = f;
         again.Combine(f, Frame.Identity);
-        return again.Equals(f);
+        return BitwiseEqual(again, f);
     }
+
+    // Frame.Equals compares with float.Equals, which treats -0 and +0 as equal; a frame holding a -0 component comes back from
+    // combine with +0 (retail's sums), so a visit does change it and the object must not be skipped yet.
+    private static bool BitwiseEqual(in Frame a, in Frame b) =>
+        IsSameBits(a.Origin, b.Origin)
+        && Bits(a.Qw) == Bits(b.Qw) && Bits(a.Qx) == Bits(b.Qx) && Bits(a.Qy) == Bits(b.Qy) && Bits(a.Qz) == Bits(b.Qz)
+        && Bits(a.M0) == Bits(b.M0) && Bits(a.M1) == Bits(b.M1) && Bits(a.M2) == Bits(b.M2)
+        && Bits(a.M3) == Bits(b.M3) && Bits(a.M4) == Bits(b.M4) && Bits(a.M5) == Bits(b.M5)
+        && Bits(a.M6) == Bits(b.M6) && Bits(a.M7) == Bits(b.M7) && Bits(a.M8) == Bits(b.M8);
+
+    private static int Bits(float f) => BitConverter.SingleToInt32Bits(f);
+
+    private static bool IsSameBits(Vector3 a, Vector3 b) => Bits(a.X) == Bits(b.X) && Bits(a.Y) == Bits(b.Y) && Bits(a.Z) == Bits(b.Z);
 
     private static bool IsPositiveZero(Vector3 v) =>
         BitConverter.SingleToInt32Bits(v.X) == 0 && BitConverter.SingleToInt32Bits(v.Y) == 0 && BitConverter.SingleToInt32Bits(v.Z) == 0;
