@@ -18,7 +18,7 @@ public class SweepGoldenHashTests
     /// at tick 119) and, with object collisions, no longer pass through each other (was 1550880469434589296).</summary>
     private const ulong SweepScene2000 = 11833748063751251874UL;
 
-    internal static ulong RunSweepScene(int ticks)
+    internal static ulong RunSweepScene(int ticks, bool descendingCreation = false)
     {
         var rng = new Random(20261122);
         TerrainWorld terrain = SweepScene.Terrain();
@@ -27,8 +27,10 @@ public class SweepGoldenHashTests
             (vx, vy) => vx == 1 && vy >= 6 ? 17 : 1);
         PhysicsWorld world = SweepScene.Physics(terrain, out _);
         var walkers = new PhysicsObj[8];
-        for (int i = 0; i < walkers.Length; i++)
+        for (int k = 0; k < walkers.Length; k++)
         {
+            // Walkers are created in index order or in reverse; the script below addresses them by index (= id - 1).
+            int i = descendingCreation ? walkers.Length - 1 - k : k;
             float x = 30f + 18f * i, y = 40f + 10f * i;
             var p = new Position(LandDefs.LCoordToGid(SweepScene.BlockX * 8 + (int)(x / 24f), SweepScene.BlockY * 8 + (int)(y / 24f)),
                 Frame.FromHeading(new Vector3(x, y, 0f), 40f * i));
@@ -68,6 +70,12 @@ public class SweepGoldenHashTests
     public void SweepScene_SameInputs_SameHashEveryRun()
     {
         Assert.Equal(RunSweepScene(2000), RunSweepScene(2000));
+    }
+
+    [Fact]
+    public void SweepScene_WalkersCreatedInReverseOrder_SameHash()
+    {
+        Assert.Equal(RunSweepScene(2000), RunSweepScene(2000, descendingCreation: true));
     }
 
     [Fact]
