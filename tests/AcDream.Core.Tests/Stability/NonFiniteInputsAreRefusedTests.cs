@@ -57,6 +57,10 @@ public class NonFiniteInputsAreRefusedTests
         h.Add(parts.Luminosity);
         h.Add(parts.Diffusion);
         h.Add(parts.Frame);
+        h.Add(parts.GetPartTranslucency(0));
+        h.Add(parts.GetPartLuminosity(0));
+        h.Add(parts.GetPartDiffusion(0));
+        h.Add(o.Parent is null ? 0u : 1u);
         InterpolationManager im = s.Interpolation!;
         h.Add((uint)im.Count);
         for (int i = 0; i < im.Count; i++)
@@ -99,7 +103,9 @@ public class NonFiniteInputsAreRefusedTests
             "SetPartDiffusion", "CallPes", "ProcessFPHook", "SetFrameOrigin", "SetInitialFrameOrigin", "StorePositionOrigin",
             "SetPositionOrigin", "SetPositionSimpleOrigin", "EnterWorldOrigin", "MoveOrTeleportOrigin", "ConstrainToOrigin",
             "ConstrainToDistance", "StickToRadius", "SequenceVelocity", "SequenceOmega", "PartRadius", "PartHeight",
-            "PartStepUpHeight", "PartStepDownHeight", "SetSpheres",
+            "PartStepUpHeight", "PartStepDownHeight", "SetSpheres", "SetCylSpheres", "SetParentFrame", "PartSetFrame",
+            "PartSetScale", "PartSetTranslucency", "PartSetPartTranslucency", "PartSetLuminosity", "PartSetPartLuminosity",
+            "PartSetDiffusion", "PartSetPartDiffusion",
             // interpolation updates
             "InterpolateToOrigin", "InterpolateToQuaternion", "EnqueueOrigin", "EnqueueBody", "EnqueueNodeVelocity",
             "EnqueueNodeExtent", "HandleReceivedPositionOrigin", "HandleReceivedPositionQuaternion", "AdjustOffsetQuantum",
@@ -155,6 +161,16 @@ public class NonFiniteInputsAreRefusedTests
             case "PartStepUpHeight": s.CreatureParts.StepUpHeight = x; break;
             case "PartStepDownHeight": s.CreatureParts.StepDownHeight = x; break;
             case "SetSpheres": s.CreatureParts.SetSpheres([new Sphere(v, 0.5f)]); break;
+            case "SetCylSpheres": s.CreatureParts.SetCylSpheres([new CylSphere(v, 0.5f, 1f)]); break;
+            case "SetParentFrame": o.SetParent(s.Player, 0, WithOrigin(p, v).Frame); break;
+            case "PartSetFrame": s.CreatureParts.SetFrame(WithOrigin(p, v).Frame); break;
+            case "PartSetScale": s.CreatureParts.SetScale(x); break;
+            case "PartSetTranslucency": s.CreatureParts.SetTranslucency(x); break;
+            case "PartSetPartTranslucency": s.CreatureParts.SetPartTranslucency(0, x); break;
+            case "PartSetLuminosity": s.CreatureParts.SetLuminosity(x); break;
+            case "PartSetPartLuminosity": s.CreatureParts.SetPartLuminosity(0, x); break;
+            case "PartSetDiffusion": s.CreatureParts.SetDiffusion(x); break;
+            case "PartSetPartDiffusion": s.CreatureParts.SetPartDiffusion(0, x); break;
             case "InterpolateToOrigin": o.InterpolateTo(WithOrigin(p, v), false); break;
             case "InterpolateToQuaternion": o.InterpolateTo(WithQuaternion(p, x), false); break;
             case "EnqueueOrigin": s.Interpolation!.Enqueue(WithOrigin(p, v)); break;

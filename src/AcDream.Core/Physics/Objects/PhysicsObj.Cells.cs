@@ -21,7 +21,7 @@ public sealed partial class PhysicsObj
     {
         Touch();
         ArgumentNullException.ThrowIfNull(parent);
-        if (parent == this || parent.World != World || !frame.IsValid())
+        if (parent == this || parent.World != World || !frame.IsValid() || !VectorMath.IsFinite(frame.Origin))
         {
             throw new ArgumentException("Invalid parent or frame.", nameof(parent));
         }

@@ -184,7 +184,12 @@ public sealed partial class SimplePartArray : IPartArray
     }
 
     /// <inheritdoc />
-    public void SetFrame(in Frame frame) => _frame = frame;
+    /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged).</exception>
+    public void SetFrame(in Frame frame)
+    {
+        Finite(frame.Origin);
+        _frame = frame;
+    }
 
     /// <inheritdoc />
     public void SetCellId(uint cellId) => CellId = cellId;
@@ -201,18 +206,23 @@ public sealed partial class SimplePartArray : IPartArray
     public Frame GetPartFrame(int index) => _frame;
 
     /// <inheritdoc />
-    public void SetScale(float scale) => Scale = scale;
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public void SetScale(float scale) => Scale = Finite(scale);
 
     /// <inheritdoc />
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     public void SetTranslucency(float translucency)
     {
+        Finite(translucency);
         Translucency = translucency;
         Array.Fill(_partTranslucency, translucency);
     }
 
     /// <inheritdoc />
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     public void SetPartTranslucency(uint part, float translucency)
     {
+        Finite(translucency);
         if (part < (uint)NumParts)
         {
             _partTranslucency[part] = translucency;
@@ -220,15 +230,19 @@ public sealed partial class SimplePartArray : IPartArray
     }
 
     /// <inheritdoc />
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     public void SetLuminosity(float luminosity)
     {
+        Finite(luminosity);
         Luminosity = luminosity;
         Array.Fill(_partLuminosity, luminosity);
     }
 
     /// <inheritdoc />
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     public void SetPartLuminosity(uint part, float luminosity)
     {
+        Finite(luminosity);
         if (part < (uint)NumParts)
         {
             _partLuminosity[part] = luminosity;
@@ -236,15 +250,19 @@ public sealed partial class SimplePartArray : IPartArray
     }
 
     /// <inheritdoc />
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     public void SetDiffusion(float diffusion)
     {
+        Finite(diffusion);
         Diffusion = diffusion;
         Array.Fill(_partDiffusion, diffusion);
     }
 
     /// <inheritdoc />
+    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     public void SetPartDiffusion(uint part, float diffusion)
     {
+        Finite(diffusion);
         if (part < (uint)NumParts)
         {
             _partDiffusion[part] = diffusion;
