@@ -71,6 +71,27 @@ public class LandblockCornerOnTerrainTests
         Assert.Equal(zHome, zGlobal);
     }
 
+    [Theory]
+    [MemberData(nameof(EdgeValues))]
+    public void OffsetsAndDistances_BetweenAPointAndItsRehomedSelf_AreExactlyZero(float c)
+    {
+        // get_offset adds the block offset (a multiple of 192, exact in float) to the difference of the local origins: the
+        // point (c, c) of block (Bx, By) and the same point re-homed are the same place, so the offset is exactly zero (for
+        // 192: 192 - 0 - 192; for -1e-7: snapped to 0, and -1e-7 - 0 is -1e-7, below EPSILON, which is what adjust_to_outside
+        // discards). Offsets towards a third point agree to within one float spacing at 200 m (1.5e-5 m).
+        var p = new Position(SweepScene.CellId(Bx, By, 0, 0), new Vector3(c, c, 5f));
+        Position home = p;
+        Assert.True(home.TryAdjustToOutside());
+        Vector3 o = p.GetOffset(home);
+        float expected = c == -1e-7f ? 1e-7f : 0f;
+        Assert.Equal(expected, o.X, 0f);
+        Assert.Equal(expected, o.Y, 0f);
+        Assert.Equal(0f, o.Z);
+        var q = new Position(SweepScene.CellId(Bx + 1, By + 1, 1, 1), new Vector3(30f, 40f, 6f));
+        Assert.True(Vector3.Distance(p.GetOffset(q), home.GetOffset(q)) <= 1.6e-5f);
+        Assert.Equal(p.Distance(q), home.Distance(q), 1.6e-5f);
+    }
+
     [Fact]
     public void HeightIsContinuous_AcrossEveryCellAndLandblockEdge_OfTheFourBlocks()
     {
