@@ -120,6 +120,36 @@ public class DtSequencePropertyTests
     }
 
     [Fact]
+    public void AWalkerRestingOnAWalkableSlope_UnderTheRetailSweep_NeverMoves_WhateverTheFrameTimes()
+    {
+        // The same on real terrain through the retail sweep: a slope rising 20 m per 24 m (N.z = 0.768 >= floor_z) and a
+        // walker (movement manager: never deactivates) standing on it. In contact on walkable ground gravity is zeroed, so
+        // no step of any length moves it.
+        Check.One(Cfg, Prop.ForAll(Sequences.ToArbitrary(), seq =>
+        {
+            TerrainWorld terrain = Behavior.SweepScene.Terrain();
+            Behavior.SweepScene.AddBlock(terrain, Behavior.SweepScene.BlockX, Behavior.SweepScene.BlockY, (vx, _) => 10 + 20 * vx);
+            var world = new PhysicsWorld(seq.Origin) { Transition = new RetailTransition(terrain) };
+            var p = new Position(Behavior.SweepScene.CellId(Behavior.SweepScene.BlockX, Behavior.SweepScene.BlockY, 3, 4), new Vector3(84f, 108f, 0f));
+            p.Frame.Origin = new Vector3(84f, 108f, Behavior.SweepScene.Ground(terrain, p));
+            PhysicsObj obj = Behavior.SweepScene.Walker(world, p);
+            Position start = obj.Position;
+            double now = seq.Origin;
+            foreach (double d in seq.Dts)
+            {
+                now += d;
+                world.Tick(now);
+                if (obj.Position != start || obj.Velocity != Vector3.Zero)
+                {
+                    return false;
+                }
+            }
+
+            return true;
+        }));
+    }
+
+    [Fact]
     public void ARestingObject_NeverMoves_WhateverTheFrameTimes()
     {
         // On walkable ground with zero velocity calc_acceleration zeroes gravity, friction has nothing to act on, the frame
