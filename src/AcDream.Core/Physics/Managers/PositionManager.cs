@@ -2,7 +2,8 @@ namespace AcDream.Core.Physics;
 
 /// <summary>
 /// Owner of an object's position-correcting sub-managers (retail <c>PositionManager</c>, acclient.h:30952,
-/// PORTAL/cpmanager/CPositionManager.c). Each sub-manager is created on first use; one that does not exist costs nothing.
+/// PORTAL/cpmanager/CPositionManager.c): interpolation towards server positions, sticking to a target, and the
+/// dead-reckoning constraint. Each sub-manager is created on first use; one that does not exist costs nothing.
 /// </summary>
 public sealed class PositionManager
 {
@@ -25,8 +26,16 @@ public sealed class PositionManager
     public ConstraintManager? ConstraintManager { get; private set; }
 
     /// <summary>
+    /// Client seam for the target tracking and move-to cancellation the sticky manager requests (retail's TargetManager and
+    /// MovementManager); null = nobody is told.
+    /// </summary>
+    public ITargetTracker? TargetTracker { get; set; }
+
+    /// <summary>
     /// Lets each sub-manager replace or adjust the step's local offset frame, in the order interpolation, sticky, constraint.
     /// </summary>
+    /// <param name="offset">The substep's offset frame (animation root motion on entry).</param>
+    /// <param name="quantum">Substep duration, seconds.</param>
     // retail: PositionManager::adjust_offset (acclient.c:388286)
     public void AdjustOffset(ref Frame offset, double quantum)
     {
@@ -35,7 +44,7 @@ public sealed class PositionManager
         ConstraintManager?.AdjustOffset(ref offset, quantum);
     }
 
-    /// <summary>End-of-step bookkeeping, in the order interpolation, constraint, sticky.</summary>
+    /// <summary>End-of-step work, in the order interpolation, constraint, sticky.</summary>
     // retail: PositionManager::UseTime (acclient.c:388266)
     public void UseTime()
     {
@@ -44,7 +53,10 @@ public sealed class PositionManager
         StickyManager?.UseTime();
     }
 
-    /// <summary>Queues an interpolation towards <paramref name="p"/>.</summary>
+    /// <summary>Queues an interpolation towards <paramref name="p"/> (see <see cref="Physics.InterpolationManager.InterpolateTo"/>).</summary>
+    /// <param name="p">The reported position.</param>
+    /// <param name="keepHeading">Keep the object's current heading.</param>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is unusable; nothing changes.</exception>
     // retail: PositionManager::InterpolateTo (acclient.c:388316)
     public void InterpolateTo(in Position p, bool keepHeading)
     {
@@ -60,7 +72,10 @@ public sealed class PositionManager
     // retail: PositionManager::IsInterpolating (acclient.c:388475)
     public bool IsInterpolating() => InterpolationManager is not null && InterpolationManager.IsInterpolating();
 
-    /// <summary>Sticks the object to another object.</summary>
+    /// <summary>Sticks the object to another object for one second (see <see cref="Physics.StickyManager.StickTo"/>).</summary>
+    /// <param name="objectId">Target id.</param>
+    /// <param name="radius">Target radius, metres.</param>
+    /// <param name="height">Target height (unused, as in retail).</param>
     // retail: PositionManager::StickTo (acclient.c:388341)
     public void StickTo(uint objectId, float radius, float height)
     {
@@ -76,7 +91,15 @@ public sealed class PositionManager
     // retail: PositionManager::GetStickyObjectID (acclient.c:388352)
     public uint GetStickyObjectId() => StickyManager?.TargetId ?? 0u;
 
-    /// <summary>Constrains the object to stay near <paramref name="p"/>.</summary>
+    /// <summary>Passes a target-tracking report to the sticky manager, if any.</summary>
+    /// <param name="info">The report.</param>
+    // retail: PositionManager::HandleUpdateTarget (acclient.c:388487)
+    public void HandleUpdateTarget(in TargetInfo info) => StickyManager?.HandleUpdateTarget(info);
+
+    /// <summary>Constrains the object's own motion relative to <paramref name="p"/> (see <see cref="Physics.ConstraintManager"/>).</summary>
+    /// <param name="p">Constraint position.</param>
+    /// <param name="startDistance">Counted distance at which scaling starts, metres.</param>
+    /// <param name="maxDistance">Counted distance at which offsets are zeroed, metres.</param>
     // retail: PositionManager::ConstrainTo (acclient.c:388366)
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {

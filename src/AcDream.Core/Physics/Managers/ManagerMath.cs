@@ -1,0 +1,24 @@
+namespace AcDream.Core.Physics;
+
+/// <summary>Retail-order helpers shared by the position managers.</summary>
+internal static class ManagerMath
+{
+    /// <summary>
+    /// <c>Position::distance</c> as retail evaluates it (acclient.c:467031): the block-aware offset, then the square root of
+    /// the sum of squares in double (an x87 temporary), NOT rounded to float, because every caller compares the double.
+    /// </summary>
+    // retail: Position::distance (acclient.c:467031)
+    public static double Distance(in Position from, in Position to)
+    {
+        System.Numerics.Vector3 o = from.GetOffset(to);
+        return System.Math.Sqrt((double)o.X * o.X + (double)o.Y * o.Y + (double)o.Z * o.Z);
+    }
+
+    /// <summary><c>AC1Legacy::Vector3::magnitude</c> in double (acclient.c:143594).</summary>
+    // retail: AC1Legacy::Vector3::magnitude (acclient.c:143594)
+    public static double Magnitude(System.Numerics.Vector3 v) =>
+        System.Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
+
+    /// <summary>True when the frame can be queued or stored: finite origin and a valid unit quaternion.</summary>
+    public static bool IsUsable(in Position p) => p.Frame.IsValid() && VectorMath.IsFinite(p.Frame.Origin);
+}
