@@ -47,7 +47,7 @@ public sealed partial class PhysicsObj
             }
             else
             {
-                InterpolateTo(p, IsMovingTo());
+                FollowRemoteReport(p); // retail profile: InterpolateTo(p, IsMovingTo())
             }
         }
 
