@@ -14,7 +14,7 @@ namespace AcDream.Core.Benchmarks.Report;
 internal sealed class SvgChart
 {
     private static readonly string[] Palette = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"];
-    private readonly List<(string Name, List<(double X, double Y)> Points, bool Lines, bool Markers)> _series = [];
+    private readonly List<(string Name, List<(double X, double Y)> Points, bool Lines, bool Markers, List<string>? Labels)> _series = [];
 
     public SvgChart(string title, string xLabel, string yLabel)
     {
@@ -37,19 +37,27 @@ internal sealed class SvgChart
 
     public int Height { get; init; } = 420;
 
-    /// <summary>Adds a series; points with non-finite coordinates (or non-positive ones on a log axis) are skipped.</summary>
-    public SvgChart Add(string name, IEnumerable<(double X, double Y)> points, bool lines = true, bool markers = false)
+    public int LegendWidth { get; init; } = 190;
+
+    /// <summary>Adds a series; points with non-finite coordinates (or non-positive ones on a log axis) are skipped. Optional
+    /// <paramref name="labels"/> (one per point) are written beside the markers.</summary>
+    public SvgChart Add(string name, IEnumerable<(double X, double Y)> points, bool lines = true, bool markers = false, IReadOnlyList<string>? labels = null)
     {
         var list = new List<(double, double)>();
+        List<string>? kept = labels is null ? null : [];
+        int i = 0;
         foreach (var p in points)
         {
             if (double.IsFinite(p.X) && double.IsFinite(p.Y) && (!LogX || p.X > 0) && (!LogY || p.Y > 0))
             {
                 list.Add(p);
+                kept?.Add(labels![i]);
             }
+
+            i++;
         }
 
-        _series.Add((name, list, lines, markers));
+        _series.Add((name, list, lines, markers, kept));
         return this;
     }
 
@@ -61,7 +69,8 @@ internal sealed class SvgChart
 
     public string Render()
     {
-        const int left = 80, right = 190, top = 40, bottom = 60;
+        const int left = 80, top = 40, bottom = 60;
+        int right = LegendWidth;
         int pw = Width - left - right, ph = Height - top - bottom;
         double x0 = double.MaxValue, x1 = double.MinValue, y0 = double.MaxValue, y1 = double.MinValue;
         foreach (var s in _series)
@@ -135,9 +144,14 @@ internal sealed class SvgChart
 
             if (s.Markers)
             {
-                foreach (var (x, y) in s.Points)
+                for (int pi = 0; pi < s.Points.Count; pi++)
                 {
+                    var (x, y) = s.Points[pi];
                     sb.Append(Inv($"<circle cx=\"{Px(x):F1}\" cy=\"{Py(y):F1}\" r=\"4\" fill=\"{colour}\"/>\n"));
+                    if (s.Labels is not null)
+                    {
+                        sb.Append(Inv($"<text x=\"{Px(x) + 6:F1}\" y=\"{Py(y) - 5:F1}\" font-size=\"10\" fill=\"{colour}\">{Esc(s.Labels[pi])}</text>\n"));
+                    }
                 }
             }
 
