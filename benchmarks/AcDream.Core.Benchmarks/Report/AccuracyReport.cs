@@ -33,7 +33,21 @@ internal static class AccuracyReport
             }
         }
 
-        var ctx = new ReportContext(quick, ReportContext.FindTerrainDir(root));
+        string? terrainDir = ReportContext.FindTerrainDir(root);
+        if (!quick)
+        {
+            // Warm-up: every scene's code once (quick), then a pause so the tiered JIT installs optimised code before timing.
+            var warm = new ReportContext(true, terrainDir) { Silent = true };
+            Substeps(warm);
+            Arithmetic(warm);
+            Renormalisation(warm);
+            Sweep(warm);
+            Smoothing(warm);
+            System.Threading.Thread.Sleep(500);
+            FineCache.Clear();
+        }
+
+        var ctx = new ReportContext(quick, terrainDir);
         var clock = System.Diagnostics.Stopwatch.StartNew();
         Substeps(ctx);
         Arithmetic(ctx);
@@ -69,7 +83,7 @@ internal static class AccuracyReport
                 ctx.Measure(sw, FrictionScene.Name, choice, retail, FrictionScene.Reference, "m",
                     () => new FrictionScene(p, pacing, ctx.Seconds(1.0, 1.0)));
                 ctx.Measure(sw, FreeFallScene.Name, choice, retail, FreeFallScene.Reference, "m",
-                    () => new FreeFallScene(p, pacing, ctx.Seconds(8.0, 1.0)));
+                    () => new FreeFallScene(p, pacing, ctx.Seconds(5.0, 1.0)));
                 MeasureAgainstFine(ctx, sw, LedgeJumpScene.Name, choice, retail, ctx.Seconds(6.0, 1.0),
                     (prof, pc, s) => new LedgeJumpScene(prof, pc, s), p, pacing, plot: pacing == Pacing.Fps30 || pacing == Pacing.Stutter60);
                 MeasureAgainstFine(ctx, sw, WallSlideScene.Name, choice, retail, ctx.Seconds(8.0, 1.0),
@@ -102,7 +116,7 @@ internal static class AccuracyReport
             string choice = mode == ArithmeticMode.RetailDouble ? "double intermediates (retail)" : "float32 throughout";
             bool retail = mode == ArithmeticMode.RetailDouble;
             Pacing pc = Pacing.Fps30;
-            ctx.Measure(sw, FreeFallScene.Name, choice, retail, FreeFallScene.Reference, "m", () => new FreeFallScene(p, pc, ctx.Seconds(8.0, 1.0)));
+            ctx.Measure(sw, FreeFallScene.Name, choice, retail, FreeFallScene.Reference, "m", () => new FreeFallScene(p, pc, ctx.Seconds(5.0, 1.0)));
             ctx.Measure(sw, FrictionScene.Name, choice, retail, FrictionScene.Reference, "m", () => new FrictionScene(p, pc, ctx.Seconds(1.0, 1.0)));
             ctx.Measure(sw, ProjectileScene.Name, choice, retail, ProjectileScene.Reference, "m", () => new ProjectileScene(p, pc, ctx.Seconds(3.0, 1.0)));
             ctx.Measure(sw, SpinScene.Name + ", 10 min", choice, retail, SpinScene.Reference, "deg", () => new SpinScene(p, pc, ctx.Seconds(600.0, 2.0)));

@@ -38,6 +38,9 @@ internal sealed class ReportContext
 
     public List<ReportRow> Rows { get; } = [];
 
+    /// <summary>No console output (warm-up pass).</summary>
+    public bool Silent { get; init; }
+
     public List<string> Notes { get; } = [];
 
     /// <summary>Trajectory plots: title -> (series name, points).</summary>
@@ -89,7 +92,11 @@ internal sealed class ReportContext
         var row = new ReportRow(switchName, scene, choice, isRetail, reference, s.Frames, s.Seconds, error, unit, ns,
             ns * s.Frames / s.Seconds, bytes, note);
         Rows.Add(row);
-        Console.WriteLine($"  {switchName,-14} {scene,-28} {choice,-34} error {error,10:G4} {unit,-4} {ns,9:F1} ns/frame {bytes,6:F1} B/frame {note}");
+        if (!Silent)
+        {
+            Console.WriteLine($"  {switchName,-14} {scene,-28} {choice,-34} error {error,10:G4} {unit,-4} {ns,9:F1} ns/frame {bytes,6:F1} B/frame {note}");
+        }
+
         return row;
     }
 
