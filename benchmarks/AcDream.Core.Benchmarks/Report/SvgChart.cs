@@ -114,13 +114,17 @@ internal sealed class SvgChart
         sb.Append(Inv($"<rect width=\"{Width}\" height=\"{Height}\" fill=\"white\"/>\n"));
         sb.Append(Inv($"<text x=\"{Width / 2}\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">{Esc(Title)}</text>\n"));
         sb.Append(Inv($"<rect x=\"{left}\" y=\"{top}\" width=\"{pw}\" height=\"{ph}\" fill=\"none\" stroke=\"#333\"/>\n"));
-        for (int i = 0; i <= 5; i++)
+        foreach (double fx in Ticks(x0, x1, LogX))
         {
-            double fx = x0 + (x1 - x0) * i / 5.0, fy = y0 + (y1 - y0) * i / 5.0;
-            double px = left + pw * i / 5.0, py = top + ph - ph * i / 5.0;
+            double px = left + (fx - x0) / (x1 - x0) * pw;
             sb.Append(Inv($"<line x1=\"{px:F1}\" y1=\"{top}\" x2=\"{px:F1}\" y2=\"{top + ph}\" stroke=\"#eee\"/>\n"));
-            sb.Append(Inv($"<line x1=\"{left}\" y1=\"{py:F1}\" x2=\"{left + pw}\" y2=\"{py:F1}\" stroke=\"#eee\"/>\n"));
             sb.Append(Inv($"<text x=\"{px:F1}\" y=\"{top + ph + 16}\" text-anchor=\"middle\">{Fmt(LogX ? Math.Pow(10, fx) : fx)}</text>\n"));
+        }
+
+        foreach (double fy in Ticks(y0, y1, LogY))
+        {
+            double py = top + ph - (fy - y0) / (y1 - y0) * ph;
+            sb.Append(Inv($"<line x1=\"{left}\" y1=\"{py:F1}\" x2=\"{left + pw}\" y2=\"{py:F1}\" stroke=\"#eee\"/>\n"));
             sb.Append(Inv($"<text x=\"{left - 6}\" y=\"{py + 4:F1}\" text-anchor=\"end\">{Fmt(LogY ? Math.Pow(10, fy) : fy)}</text>\n"));
         }
 
@@ -165,6 +169,38 @@ internal sealed class SvgChart
 
         double Px(double x) => left + (TX(x) - x0) / (x1 - x0) * pw;
         double Py(double y) => top + ph - (TY(y) - y0) / (y1 - y0) * ph;
+    }
+
+    // Tick positions in axis units: whole decades on a log axis (every other one when more than 8), else 1/2/5 steps.
+    private static List<double> Ticks(double lo, double hi, bool log)
+    {
+        var list = new List<double>();
+        if (log)
+        {
+            double first = Math.Ceiling(lo), last = Math.Floor(hi);
+            int step = last - first > 8 ? 2 : 1;
+            for (double d = first; d <= last + 1e-9; d += step)
+            {
+                list.Add(d);
+            }
+
+            if (list.Count >= 2)
+            {
+                return list;
+            }
+
+            list.Clear();
+        }
+
+        double raw = (hi - lo) / 5.0;
+        double mag = Math.Pow(10, Math.Floor(Math.Log10(raw)));
+        double unit = raw / mag < 1.5 ? mag : raw / mag < 3.5 ? 2 * mag : raw / mag < 7.5 ? 5 * mag : 10 * mag;
+        for (double v = Math.Ceiling(lo / unit) * unit; v <= hi + unit * 1e-9; v += unit)
+        {
+            list.Add(v);
+        }
+
+        return list;
     }
 
     private double TX(double x) => LogX ? Math.Log10(x) : x;
