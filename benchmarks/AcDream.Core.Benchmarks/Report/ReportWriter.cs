@@ -37,6 +37,7 @@ internal static class ReportWriter
         sb.AppendLine("For the sweep, the terrain itself: deepest penetration of a sphere below the surface, and the number of tunnelled balls.");
         sb.AppendLine("The remote creature is measured against its true path at client time (the network's 0.1 s delay is in every row).");
         sb.AppendLine();
+        Summary(ctx, sb);
         foreach (string sw in Switches)
         {
             sb.AppendLine("## " + char.ToUpperInvariant(sw[0]) + sw[1..]);
@@ -80,6 +81,52 @@ internal static class ReportWriter
         }
 
         return sb.ToString();
+    }
+
+    // One line per non-retail choice: its error and time relative to the retail row of the same scene and pacing.
+    private static void Summary(ReportContext ctx, StringBuilder sb)
+    {
+        sb.AppendLine("## Summary: each choice against retail");
+        sb.AppendLine();
+        sb.AppendLine("Error and time of each non-retail choice divided by those of the retail row of the same scene (and the same pacing).");
+        sb.AppendLine("An error ratio below 1 means closer to the reference than retail; a time ratio below 1 means cheaper.");
+        sb.AppendLine();
+        sb.AppendLine("| switch | scene | retail error | choice | error | error ÷ retail | time ÷ retail |");
+        sb.AppendLine("|---|---|---:|---|---:|---:|---:|");
+        foreach (ReportRow r in ctx.Rows)
+        {
+            if (r.IsRetail || r.Reference == "(is the reference)")
+            {
+                continue;
+            }
+
+            ReportRow? basis = null;
+            foreach (ReportRow b in ctx.Rows)
+            {
+                if (b.IsRetail && b.Switch == r.Switch && b.Scene == r.Scene && Context(b) == Context(r))
+                {
+                    basis = b;
+                    break;
+                }
+            }
+
+            if (basis is null)
+            {
+                continue;
+            }
+
+            string ratio = basis.Error > 0 ? Inv($"{r.Error / basis.Error:F2}") : (r.Error > 0 ? "retail exact" : "1.00");
+            sb.AppendLine(Inv($"| {r.Switch} | {r.Scene} | {Err(basis)} | {r.Choice} | {Err(r)} | {ratio} | {r.NsPerFrame / basis.NsPerFrame:F2} |"));
+        }
+
+        sb.AppendLine();
+    }
+
+    // The pacing part of a choice ("..., 60 fps + stutters"), or "" when the choice names none.
+    private static string Context(ReportRow r)
+    {
+        int i = r.Choice.LastIndexOf(", ", StringComparison.Ordinal);
+        return i >= 0 && r.Choice.Contains("fps", StringComparison.Ordinal) ? r.Choice[(i + 2)..] : "";
     }
 
     public static void Charts(ReportContext ctx, string outDir)
