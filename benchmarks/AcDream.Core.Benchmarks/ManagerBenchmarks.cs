@@ -1,81 +1,109 @@
 using System.Numerics;
-using AcDream.Core.Benchmarks.Report;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Replay.Harness;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;
 
 /// <summary>
-/// The position managers at work: N remote creatures on level ground (<c>FlatFloorSeam</c>) around the player, each
-/// receiving a server position 1 m ahead every 8th world tick, under each <see cref="RemoteSmoothing"/> (retail: the
-/// InterpolationManager's adjust_offset / UseTime every step, the ConstraintManager re-armed on every report).
-/// Each invoke runs <see cref="Ticks"/> world ticks at 0.034 s; the mean is per world tick, reports included.
+/// Cost of the position managers per server update and per tick: InterpolateTo (near branch with prune and head eviction),
+/// InterpolationManager.AdjustOffset, the whole PositionManager (interpolation, sticky, constraint) per substep, and a world
+/// tick of one interpolating creature. Each benchmark runs <see cref="Ops"/> operations; the mean is per operation.
+/// Expected allocation: 0 B.
 /// </summary>
 [MemoryDiagnoser]
 public class ManagerBenchmarks
 {
-    private const int Ticks = 16;
-    private const double Dt = 0.034;
-    private PhysicsWorld _world = null!;
-    private PhysicsObj[] _creatures = [];
+    private const int Ops = 1000;
+    private ManagerScene _scene = null!;
+    private Position[] _updates = null!;
     private double _now;
-    private int _tick;
+    private ushort _stamp;
 
-    /// <summary>Number of remote creatures.</summary>
-    [Params(10, 100, 1000)]
-    public int N { get; set; }
-
-    /// <summary>How the creatures follow their reports.</summary>
-    [Params(RemoteSmoothing.Retail, RemoteSmoothing.Snap, RemoteSmoothing.LinearExtrapolation)]
-    public RemoteSmoothing Smoothing { get; set; }
-
-    /// <summary>Builds the world: the player at (96, 96), creatures on a grid within 40 m of it, walking north 2 m/s.</summary>
+    /// <summary>A creature on flat ground with a full queue, a stick and a constraint.</summary>
     [GlobalSetup]
     public void Setup()
     {
-        _world = new PhysicsWorld(0.0, PhysicsProfile.Retail.With(remoteSmoothing: Smoothing)) { Transition = new FlatFloorSeam() };
-        PhysicsObj player = _world.CreateObject(1);
-        player.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f };
-        player.EnterWorld(new Position(0x80800001u, new Vector3(96f, 96f, 0f)));
-        _world.Player = player;
-        _creatures = new PhysicsObj[N];
-        for (int i = 0; i < N; i++)
+        _scene = new ManagerScene(new Vector3(60f, 40f, 0f));
+        _scene.CreatureParts.SequenceVelocity = new Vector3(0f, 4f, 0f);
+        _updates = new Position[64];
+        for (int i = 0; i < _updates.Length; i++)
         {
-            PhysicsObj c = _world.CreateObject((uint)(i + 2));
-            c.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f, Height = 1.8f, SequenceVelocity = new Vector3(0f, 2f, 0f) };
-            c.MovementManager = new BasicMovementManager();
-            var p = new Position(0x80800001u, new Vector3(66f + (i % 32) * 2f, 66f + (i / 32) * 2f, 0f));
-            p.TryAdjustToOutside();
-            c.EnterWorld(p);
-            _creatures[i] = c;
+            _updates[i] = ManagerScene.At(new Vector3(60f + (i % 2 * 0.5f), 41f + (i * 0.4f), 0f));
         }
 
-        _now = 0.0;
-        _tick = 0;
-        _world.Tick(_now += Dt);
+        for (int i = 0; i < _updates.Length; i++)
+        {
+            _scene.Creature.InterpolateTo(_updates[i], false);
+        }
+
+        _scene.Managers.ConstrainTo(_scene.Creature.Position, 10f, 50f);
+        _scene.Managers.StickTo(1, 0.5f, 1f);
+        _scene.Creature.HandleUpdateTarget(new TargetInfo { ObjectId = 1, Status = TargetStatus.Ok, TargetPosition = _scene.Player.Position });
     }
 
-    /// <summary>One world tick, with the reports due in it.</summary>
-    [Benchmark(OperationsPerInvoke = Ticks)]
-    public bool Tick()
+    /// <summary>InterpolateTo: one server update (near branch, prune walk, head eviction at 20).</summary>
+    [Benchmark(OperationsPerInvoke = Ops)]
+    public int InterpolateTo()
     {
-        bool ticked = false;
-        for (int i = 0; i < Ticks; i++)
+        InterpolationManager im = _scene.Interpolation!;
+        for (int i = 0; i < Ops; i++)
         {
-            _now += Dt;
-            if ((++_tick & 7) == 0)
+            im.InterpolateTo(_updates[i & 63], false);
+        }
+
+        return im.Count;
+    }
+
+    /// <summary>InterpolationManager.AdjustOffset: one substep's step towards the head (audit every 5th).</summary>
+    [Benchmark(OperationsPerInvoke = Ops)]
+    public Frame InterpolationAdjustOffset()
+    {
+        InterpolationManager im = _scene.Interpolation!;
+        Frame offset = Frame.Identity;
+        for (int i = 0; i < Ops; i++)
+        {
+            if (im.Count == 0)
             {
-                _world.SetCurrentTime(_now);
-                foreach (PhysicsObj c in _creatures)
-                {
-                    Position p = c.Position;
-                    p.Frame.Origin += new Vector3(0f, 1f, 0f);
-                    p.TryAdjustToOutside();
-                    c.ReceiveRemotePosition(p, false, true);
-                }
+                im.InterpolateTo(_updates[i & 63], false);
             }
 
-            ticked = _world.Tick(_now);
+            offset = Frame.Identity;
+            im.AdjustOffset(ref offset, 1.0 / 30.0);
+        }
+
+        return offset;
+    }
+
+    /// <summary>PositionManager.AdjustOffset + UseTime: all three managers, one substep.</summary>
+    [Benchmark(OperationsPerInvoke = Ops)]
+    public Frame PositionManagerTick()
+    {
+        PositionManager pm = _scene.Managers;
+        Frame offset = Frame.Identity;
+        for (int i = 0; i < Ops; i++)
+        {
+            offset = Frame.Identity;
+            pm.AdjustOffset(ref offset, 1.0 / 30.0);
+            pm.UseTime();
+        }
+
+        return offset;
+    }
+
+    /// <summary>A 30 Hz world tick of the player and one remote creature receiving a report every tick.</summary>
+    [Benchmark(OperationsPerInvoke = Ops)]
+    public bool UpdateAndWorldTick()
+    {
+        bool ticked = false;
+        for (int i = 0; i < Ops; i++)
+        {
+            _now += 1.0 / 30.0;
+            Position p = _updates[i & 63];
+            p.Frame.Origin.Y += (float)(_now * 0.01 % 1.0);
+            _stamp++;
+            _scene.Creature.HandleReceivedPosition(p, _stamp, 0, true);
+            ticked |= _scene.World.Tick(_now);
         }
 
         return ticked;

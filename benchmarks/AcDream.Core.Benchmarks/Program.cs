@@ -5,6 +5,7 @@ namespace AcDream.Core.Benchmarks;
 
 /// <summary>
 /// Entry point. <c>report</c> runs the accuracy-versus-cost report (add <c>--quick</c> for a short CI run that writes nothing);
+/// <c>replay</c> writes the interpolation replay figures (docs/interpolation-replay.md and .svg);
 /// anything else goes to BenchmarkDotNet's switcher (e.g. <c>--filter '*'</c>, <c>--job Dry</c>).
 /// </summary>
 public static class Program
@@ -15,6 +16,11 @@ public static class Program
         if (args.Length > 0 && string.Equals(args[0], "report", StringComparison.OrdinalIgnoreCase))
         {
             return Report.AccuracyReport.Run(args.AsSpan(1));
+        }
+
+        if (args.Length > 0 && string.Equals(args[0], "replay", StringComparison.OrdinalIgnoreCase))
+        {
+            return Report.ReplayReport.Run(args.AsSpan(1));
         }
 
         BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);

@@ -116,8 +116,8 @@ public class FidelitySwitchTests
         Vector3 target = start + new Vector3(0f, 2f, 0f);
         PhysicsObj retail = Creature(PhysicsProfile.Retail, start);
         PhysicsObj snap = Creature(PhysicsProfile.Retail.With(remoteSmoothing: RemoteSmoothing.Snap), start);
-        Assert.True(retail.ReceiveRemotePosition(ManagerScene.At(target), false, true));
-        Assert.True(snap.ReceiveRemotePosition(ManagerScene.At(target), false, true));
+        Assert.True(retail.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true));
+        Assert.True(snap.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true));
         Assert.True(retail.IsInterpolating());
         Assert.Equal(start, retail.Position.Frame.Origin);
         Assert.False(snap.IsInterpolating());
@@ -136,9 +136,9 @@ public class FidelitySwitchTests
         foreach (PhysicsObj c in new[] { ext, snap })
         {
             c.World.SetCurrentTime(0.1);
-            c.ReceiveRemotePosition(ManagerScene.At(new Vector3(50f, 52f, 0f)), false, true);
+            Assert.True(c.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 52f, 0f)), 1, 0, true));
             c.World.Tick(0.6);
-            c.ReceiveRemotePosition(ManagerScene.At(new Vector3(50f, 54f, 0f)), false, true);
+            Assert.True(c.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 54f, 0f)), 2, 0, true));
             c.World.Tick(0.7);
         }
 

@@ -23,16 +23,19 @@ public class ManagerAllocationTests
 
         var far = ManagerScene.At(new Vector3(60f, 190f, 0f));
         double now = 0;
+        ushort stamp = 0;
         void Run(int frames)
         {
             for (int f = 0; f < frames; f++)
             {
                 now += 1.0 / 30.0;
                 int k = f % positions.Length;
-                s.Creature.ReceiveRemotePosition(positions[k], false, true);
+                stamp++;
+                s.Creature.HandleReceivedPosition(positions[k], stamp, 0, true);
                 if (f % 50 == 49)
                 {
-                    s.Creature.ReceiveRemotePosition(far, false, true);   // far branch + blip
+                    stamp++;
+                    s.Creature.HandleReceivedPosition(far, stamp, 0, true);   // far branch + blip
                 }
 
                 s.World.Tick(now);

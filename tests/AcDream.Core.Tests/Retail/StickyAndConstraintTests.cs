@@ -15,7 +15,6 @@ public class StickyAndConstraintTests
     {
         public int Sets;
         public int Clears;
-        public uint LastCancel;
         public float LastRadius;
         public double LastQuantum;
 
@@ -27,8 +26,6 @@ public class StickyAndConstraintTests
         }
 
         public void ClearTarget(PhysicsObj obj) => Clears++;
-
-        public void CancelMoveTo(PhysicsObj obj, uint error) => LastCancel = error;
     }
 
     private static (ManagerScene Scene, PhysicsObj Target) StuckScene(Vector3 targetAt)
@@ -103,6 +100,8 @@ public class StickyAndConstraintTests
     {
         var s = new ManagerScene(Start);
         var tracker = new Tracker();
+        var motion = new StubMotion(4.0, 4.0);
+        s.Creature.MovementManager = motion;
         s.Managers.TargetTracker = tracker;
         s.Managers.StickTo(42, 0.5f, 1f);
         Assert.Equal(1, tracker.Sets);
@@ -115,7 +114,7 @@ public class StickyAndConstraintTests
         s.Managers.UseTime();
         Assert.Equal(0u, s.Creature.GetStickyObjectId());
         Assert.Equal(1, tracker.Clears);
-        Assert.Equal(0x36u, tracker.LastCancel);
+        Assert.Equal(0x36u, motion.LastCancel);
     }
 
     [Fact]

@@ -24,6 +24,7 @@ internal sealed class RemoteCreatureScene : WorldSim
     private static readonly double[] Durations = [3.0, 3.0, 1.0, 3.0, 3.0];
     private readonly PhysicsObj _creature;
     private double _nextSend = Period;
+    private ushort _stamp;
     private double _sum;
     private int _n;
     private double _max;
@@ -55,7 +56,7 @@ internal sealed class RemoteCreatureScene : WorldSim
             TerrainKit.Walk(_creature, new Vector3(0f, moving ? Speed : 0f, 0f));
             World.SetCurrentTime(_nextSend + Latency);
             var report = new Position(TerrainKit.CellId((int)(p.X / 24f), (int)(p.Y / 24f)), Frame.FromHeading(new Vector3(p.X, p.Y, Ground), heading));
-            _creature.ReceiveRemotePosition(report, false, true);
+            _creature.HandleReceivedPosition(report, ++_stamp, 0, true);
             _nextSend += Period;
         }
 

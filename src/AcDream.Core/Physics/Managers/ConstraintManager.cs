@@ -95,6 +95,7 @@ public sealed class ConstraintManager
     // retail: ConstraintManager::ConstrainTo (acclient.c:389513)
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {
+        PhysicsObj.Touch();
         if (!ManagerMath.IsUsable(p))
         {
             throw new ArgumentException("Position must have a finite origin and a valid rotation.", nameof(p));

@@ -131,6 +131,7 @@ public sealed partial class InterpolationManager
     // retail: InterpolationManager::InterpolateTo (acclient.c:389016)
     public void InterpolateTo(in Position p, bool keepHeading)
     {
+        PhysicsObj.Touch();
         ThrowIfUnusable(p, nameof(p));
         Position body = PhysicsObj.Position;
         InterpolateToInternal(p, keepHeading, body);
@@ -147,6 +148,7 @@ public sealed partial class InterpolationManager
     /// <exception cref="ArgumentException">A position has a non-finite origin or an invalid quaternion; nothing changes.</exception>
     public void Enqueue(in Position p, bool keepHeading = false, Position? currentBodyPosition = null)
     {
+        PhysicsObj.Touch();
         ThrowIfUnusable(p, nameof(p));
         if (currentBodyPosition is Position given)
         {
@@ -171,6 +173,7 @@ public sealed partial class InterpolationManager
     /// <exception cref="ArgumentException">Unknown type, unusable position or non-finite velocity/extent; nothing changes.</exception>
     public void EnqueueNode(InterpolationNodeType type, in Position p, Vector3 velocity, float extent = 0f)
     {
+        PhysicsObj.Touch();
         if (type is not (InterpolationNodeType.Position or InterpolationNodeType.Jump or InterpolationNodeType.Velocity))
         {
             throw new ArgumentException("Node type must be Position, Jump or Velocity.", nameof(type));

@@ -26,8 +26,8 @@ public sealed class PositionManager
     public ConstraintManager? ConstraintManager { get; private set; }
 
     /// <summary>
-    /// Client seam for the target tracking and move-to cancellation the sticky manager requests (retail's TargetManager and
-    /// MovementManager); null = nobody is told.
+    /// Client seam for the target tracking the sticky manager requests (retail's TargetManager); null = nobody is told.
+    /// (Its move-to cancellation goes to <see cref="PhysicsObj.MovementManager"/>.)
     /// </summary>
     public ITargetTracker? TargetTracker { get; set; }
 
@@ -60,6 +60,7 @@ public sealed class PositionManager
     // retail: PositionManager::InterpolateTo (acclient.c:388316)
     public void InterpolateTo(in Position p, bool keepHeading)
     {
+        PhysicsObj.Touch();
         InterpolationManager ??= new InterpolationManager(PhysicsObj);
         InterpolationManager.InterpolateTo(p, keepHeading);
     }
@@ -79,6 +80,7 @@ public sealed class PositionManager
     // retail: PositionManager::StickTo (acclient.c:388341)
     public void StickTo(uint objectId, float radius, float height)
     {
+        PhysicsObj.Touch();
         StickyManager ??= new StickyManager(PhysicsObj);
         StickyManager.StickTo(objectId, radius, height);
     }
@@ -103,6 +105,7 @@ public sealed class PositionManager
     // retail: PositionManager::ConstrainTo (acclient.c:388366)
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {
+        PhysicsObj.Touch();
         ConstraintManager ??= new ConstraintManager(PhysicsObj);
         ConstraintManager.ConstrainTo(p, startDistance, maxDistance);
     }
@@ -110,6 +113,13 @@ public sealed class PositionManager
     /// <summary>Removes the constraint.</summary>
     // retail: PositionManager::UnConstrain (acclient.c:388380)
     public void UnConstrain() => ConstraintManager?.UnConstrain();
+
+    /// <summary>True while adjust_offset and UseTime would do nothing: no interpolation node and no pending blip, no sticky
+    /// target, no constraint (the scene may then skip a resting object).</summary>
+    internal bool IsIdle =>
+        (InterpolationManager is null || (InterpolationManager.Count == 0 && InterpolationManager.NodeFailCounter <= 0))
+        && (StickyManager is null || StickyManager.TargetId == 0)
+        && (ConstraintManager is null || !ConstraintManager.IsConstrained);
 
     /// <summary>True when the constraint holds the object fully.</summary>
     // retail: PositionManager::IsFullyConstrained (acclient.c:388390)

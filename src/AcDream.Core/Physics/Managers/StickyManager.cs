@@ -158,6 +158,7 @@ public sealed class StickyManager
     // retail: StickyManager::StickTo (acclient.c:388664)
     public void StickTo(uint objectId, float radius, float height)
     {
+        PhysicsObj.Touch();
         if (!float.IsFinite(radius))
         {
             throw new ArgumentException("Radius must be finite.", nameof(radius));
@@ -216,8 +217,8 @@ public sealed class StickyManager
     {
         TargetId = 0;
         Initialized = false;
-        ITargetTracker? tracker = PhysicsObj.PositionManager?.TargetTracker;
-        tracker?.ClearTarget(PhysicsObj);
-        tracker?.CancelMoveTo(PhysicsObj, UnstickMoveToError);
+        PhysicsObj.PositionManager?.TargetTracker?.ClearTarget(PhysicsObj);
+        // retail: CPhysicsObj::cancel_moveto (acclient.c:317420) -> MovementManager::CancelMoveTo(0x36)
+        PhysicsObj.MovementManager?.CancelMoveTo(UnstickMoveToError);
     }
 }

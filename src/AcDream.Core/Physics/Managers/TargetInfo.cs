@@ -45,9 +45,8 @@ public struct TargetInfo
 }
 
 /// <summary>
-/// Client seam for the target tracking and move-to cancellation the sticky manager asks for (retail
-/// <c>CPhysicsObj::set_target</c> / <c>clear_target</c> through the TargetManager, and <c>cancel_moveto</c> through the
-/// MovementManager). Called on the update path; must not allocate.
+/// Client seam for the target tracking the sticky manager asks for (retail <c>CPhysicsObj::set_target</c> /
+/// <c>clear_target</c>, which reach the TargetManager). Called on the update path; must not allocate.
 /// </summary>
 public interface ITargetTracker
 {
@@ -58,8 +57,4 @@ public interface ITargetTracker
     /// <summary>Stop tracking for <paramref name="obj"/>.</summary>
     // retail: CPhysicsObj::clear_target (acclient.c:316011)
     void ClearTarget(PhysicsObj obj);
-
-    /// <summary>Cancel <paramref name="obj"/>'s move-to with error <paramref name="error"/>.</summary>
-    // retail: CPhysicsObj::cancel_moveto (acclient.c:317420)
-    void CancelMoveTo(PhysicsObj obj, uint error);
 }

@@ -10,6 +10,13 @@ namespace AcDream.Core.Physics;
 public interface IPartArray
 {
     /// <summary>
+    /// True when <see cref="Update"/> would leave the offset frame at the identity and nothing else in the part array changes
+    /// per step (no animation, no root motion): the scene may then skip the object while it rests. False by default, so a
+    /// client's animated part array is always visited.
+    /// </summary>
+    bool IsIdle => false;
+
+    /// <summary>
     /// Number of collision spheres (retail <c>CPartArray::GetNumSphere</c>). An object with none never translates through
     /// update_object (retail keeps its origin and applies only the new orientation).
     /// </summary>

@@ -19,12 +19,14 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_parent (acclient.c:323002), simplified: no shadow cells
     public bool SetParent(PhysicsObj parent, uint partIndex, in Frame frame)
     {
+        Touch();
         ArgumentNullException.ThrowIfNull(parent);
         if (parent == this || parent.World != World || !frame.IsValid())
         {
             throw new ArgumentException("Invalid parent or frame.", nameof(parent));
         }
 
+        parent.Touch();
         parent.Children ??= new ChildList();
         if (parent.Children.IndexOf(this) >= 0)
         {
@@ -49,12 +51,14 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::unset_parent (acclient.c:320479), simplified
     public void UnsetParent()
     {
+        Touch();
         PhysicsObj? parent = Parent;
         if (parent is null)
         {
             return;
         }
 
+        parent.Touch();
         parent.Children?.Remove(this);
         Parent = null;
         UpdateTime = World.CurrentTime;

@@ -17,6 +17,7 @@ public sealed partial class PhysicsObj
     /// <exception cref="ArgumentException">The hook already belongs to an object.</exception>
     public void AddHook(PhysicsObjHook hook)
     {
+        Touch();
         ArgumentNullException.ThrowIfNull(hook);
         if (hook.Owner is not null)
         {
@@ -39,6 +40,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::add_anim_hook (acclient.c:322062)
     public void AddAnimHook(IAnimHook hook)
     {
+        Touch();
         ArgumentNullException.ThrowIfNull(hook);
         if (_animHookCount == _animHooks.Length)
         {
@@ -85,6 +87,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::process_fp_hook (acclient.c:320571)
     public void ProcessFPHook(PhysicsHookType type, float value, uint userData)
     {
+        Touch();
         switch (type)
         {
             case PhysicsHookType.Scale:
@@ -122,6 +125,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetScale (acclient.c:320621)
     public void SetScale(float scale, double delta)
     {
+        Touch();
         ThrowIfNotFinite(scale, delta);
         if (delta >= PhysicsGlobals.Epsilon)
         {
@@ -137,6 +141,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetScaleStatic (acclient.c:319007)
     public void SetScaleStatic(float scale)
     {
+        Touch();
         Scale = scale;
         PartArray?.SetScale(scale);
     }
@@ -147,6 +152,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetTranslucency (acclient.c:318693)
     public void SetTranslucency(float translucency, double delta)
     {
+        Touch();
         ThrowIfNotFinite(translucency, delta);
         if (delta >= PhysicsGlobals.Epsilon)
         {
@@ -163,6 +169,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetTranslucency2 (acclient.c:316920)
     public void SetTranslucency2(float start, float end, double delta)
     {
+        Touch();
         ThrowIfNotFinite(start, delta);
         ThrowIfNotFinite(end, delta);
         if (delta >= PhysicsGlobals.Epsilon)
@@ -179,6 +186,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetTranslucencyInternal (acclient.c:316802)
     public void SetTranslucencyInternal(float translucency)
     {
+        Touch();
         float t = translucency < (double)_translucencyOriginal ? _translucencyOriginal : translucency;
         Translucency = t;
         PartArray?.SetTranslucency(t);
@@ -222,6 +230,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::CallPES (acclient.c:318972)
     public void CallPes(uint scriptId, double delta)
     {
+        Touch();
         ThrowIfNotFinite(0f, delta);
         if (delta >= PhysicsGlobals.Epsilon)
         {

@@ -7,6 +7,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::MakePositionManager (acclient.c:317430)
     public PositionManager MakePositionManager()
     {
+        Touch();
         PositionManager ??= new PositionManager(this);
         ActivateIfNotStatic();
         return PositionManager;
@@ -38,6 +39,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::InterpolateTo (acclient.c:317580)
     public void InterpolateTo(in Position p, bool keepHeading)
     {
+        Touch();
         if (!p.Frame.IsValid())
         {
             throw new System.ArgumentException("Position frame must be valid.", nameof(p));
@@ -59,6 +61,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::ConstrainTo (acclient.c:317590)
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {
+        Touch();
         if (!p.Frame.IsValid())
         {
             throw new System.ArgumentException("Position frame must be valid.", nameof(p));

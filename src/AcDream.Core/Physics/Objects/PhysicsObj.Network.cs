@@ -35,6 +35,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450)
     public bool MoveOrTeleport(in Position p, ushort teleportTimestamp, bool contact)
     {
+        Touch();
         if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
         {
             throw new ArgumentException("Position frame must be valid.", nameof(p));
@@ -74,6 +75,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::teleport_hook (acclient.c:322236)
     public void TeleportHook()
     {
+        Touch();
         MovementManager?.CancelMoveTo(0x3Cu);
         PositionManager?.UnStick();
         PositionManager?.StopInterpolating();

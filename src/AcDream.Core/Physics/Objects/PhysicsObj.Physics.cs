@@ -44,7 +44,11 @@ public sealed partial class PhysicsObj
                 _velocity = v;
             }
 
-            CalcFriction(quantum, mag2);
+            if ((World.Effects & SceneEffects.Friction) != 0)
+            {
+                CalcFriction(quantum, mag2);
+            }
+
             if ((double)mag2 - 0.25 * 0.25 < PhysicsGlobals.Epsilon)
             {
                 _velocity = Vector3.Zero;
@@ -85,13 +89,14 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::calc_acceleration (acclient.c:317786)
     public void CalcAcceleration()
     {
+        Touch();
         TransientState ts = _transientState;
         if ((ts & TransientState.Contact) != 0 && (ts & TransientState.OnWalkable) != 0 && (_state & PhysicsState.Sledding) == 0)
         {
             _acceleration = Vector3.Zero;
             _omega = Vector3.Zero;
         }
-        else if ((_state & PhysicsState.Gravity) != 0)
+        else if ((_state & PhysicsState.Gravity) != 0 && (World.Effects & SceneEffects.Gravity) != 0)
         {
             _acceleration = new Vector3(0f, 0f, PhysicsGlobals.Gravity);
         }
@@ -165,6 +170,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_velocity (acclient.c:318577)
     public void SetVelocity(Vector3 velocity)
     {
+        Touch();
         ThrowIfNotFinite(velocity, nameof(velocity));
         if (velocity != _velocity)
         {
@@ -195,6 +201,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_local_velocity (acclient.c:318617)
     public void SetLocalVelocity(Vector3 localVelocity)
     {
+        Touch();
         ThrowIfNotFinite(localVelocity, nameof(localVelocity));
         SetVelocity(_position.Frame.LocalToGlobalVec(localVelocity));
     }
@@ -204,6 +211,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_omega (acclient.c:316612)
     public void SetOmega(Vector3 omega)
     {
+        Touch();
         ThrowIfNotFinite(omega, nameof(omega));
         _omega = omega;
     }
@@ -215,6 +223,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_active (acclient.c:316979)
     public bool SetActive(bool active)
     {
+        Touch();
         if (active)
         {
             if ((_state & PhysicsState.Static) != 0)
@@ -239,6 +248,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_on_walkable (acclient.c:318501)
     public void SetOnWalkable(bool onWalkable)
     {
+        Touch();
         bool was = (_transientState & TransientState.OnWalkable) != 0;
         if (onWalkable)
         {
@@ -268,6 +278,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::clear_transient_states (acclient.c:319024)
     public void ClearTransientStates()
     {
+        Touch();
         _transientState &= ~TransientState.Contact;
         CalcAcceleration();
         bool wasOnWalkable = (_transientState & TransientState.OnWalkable) != 0;
@@ -291,6 +302,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_ethereal (acclient.c:319046)
     public bool SetEthereal(bool ethereal)
     {
+        Touch();
         if (ethereal)
         {
             _state |= PhysicsState.Ethereal;

@@ -12,6 +12,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_frame (acclient.c:321327)
     public void SetFrame(in Frame frame)
     {
+        Touch();
         Frame f = frame;
         if (!f.IsValid() && f.IsValidExceptForHeading())
         {
@@ -31,6 +32,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_initial_frame (acclient.c:321355)
     public void SetInitialFrame(in Frame frame)
     {
+        Touch();
         _position.Frame = frame;
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
@@ -45,6 +47,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_heading (acclient.c:321376)
     public void SetHeading(float degrees)
     {
+        Touch();
         if (!float.IsFinite(degrees))
         {
             throw new ArgumentException("Heading must be finite.", nameof(degrees));
@@ -60,6 +63,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::store_position (acclient.c:321388)
     public void StorePosition(in Position p)
     {
+        Touch();
         Position np = p;
         if ((np.ObjCellId & 0xFFFFu) < 0x100u)
         {
@@ -83,6 +87,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetPositionSimple (acclient.c:323420)
     public SetPositionError SetPositionSimple(in Position p, bool sliding)
     {
+        Touch();
         SetPositionFlags flags = SetPositionFlags.Teleport | SetPositionFlags.SendPositionEvent;
         if (sliding)
         {
@@ -97,6 +102,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetPosition (acclient.c:323289)
     public SetPositionError SetPosition(in Position p, SetPositionFlags flags)
     {
+        Touch();
         if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
         {
             throw new ArgumentException("Position frame must be valid.", nameof(p));
@@ -114,6 +120,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::enter_world(Position*) (acclient.c:323440) -> enter_world(slide) (acclient.c:323345)
     public bool EnterWorld(in Position p)
     {
+        Touch();
         if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
         {
             throw new ArgumentException("Position frame must be valid.", nameof(p));
@@ -154,6 +161,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
     public void CommitTransition(in TransitionResult t)
     {
+        Touch();
         bool prevOnWalkable = (_transientState & TransientState.OnWalkable) != 0;
         bool prevContact = (_transientState & TransientState.Contact) != 0;
         if (t.CurrentCellId == 0)
@@ -240,6 +248,7 @@ public sealed partial class PhysicsObj
     // retail: the lost-cell branch of CPhysicsObj::SetPositionInternal (acclient.c:322503, 323034)
     public void GoToLostCell(in Position p)
     {
+        Touch();
         LeaveCell();
         StorePosition(p);
         _transientState &= ~TransientState.Active;

@@ -6,52 +6,50 @@ namespace AcDream.Core.Physics;
 public sealed partial class PhysicsObj
 {
     /// <summary>
-    /// Applies a server position report for an object the client does not control: the remote branch of
-    /// <c>SmartBox::HandleReceivedPosition</c> through <c>CPhysicsObj::MoveOrTeleport</c>. A teleport (or an object not yet in
-    /// a cell) is placed at once after the teleport hook; an update without ground contact is ignored; an object 96 m or
-    /// more from the player snaps (interpolation stopped); anything else is interpolated, keeping the heading while a
-    /// move-to runs. When the report was used, the constraint is re-armed at the object's current position with
-    /// <see cref="GetStartConstraintDistance"/> / <see cref="GetMaxConstraintDistance"/>.
+    /// Applies a server position report for an object the client does not control (the remote branch of retail's
+    /// <c>SmartBox::HandleReceivedPosition</c>): a report whose position timestamp is not newer is dropped; one whose teleport
+    /// timestamp is older is dropped and the position stamp restored; otherwise <see cref="MoveOrTeleport"/> runs and, when it
+    /// used the report, the constraint is re-armed at the object's current position with
+    /// <see cref="GetStartConstraintDistance"/> / <see cref="GetMaxConstraintDistance"/> (the dead-reckoning leash).
     /// </summary>
-    /// <remarks>Retail's timestamp tests (a stale teleport stamp drops the report; a newer one means teleport) belong to
-    /// the caller, which passes the outcome in <paramref name="isNewTeleport"/>.</remarks>
+    /// <remarks>SmartBox's parent and placement-frame handling (unset_parent, SetPlacementFrame) and its error counter are
+    /// the client's concern and not ported here.</remarks>
     /// <param name="p">Reported position.</param>
-    /// <param name="isNewTeleport">The report carries a newer teleport timestamp.</param>
+    /// <param name="positionTimestamp">The report's 16-bit position timestamp (POSITION_TS).</param>
+    /// <param name="teleportTimestamp">The report's 16-bit teleport timestamp (TELEPORT_TS).</param>
     /// <param name="hasContact">The report says the object is on the ground.</param>
-    /// <returns>True when the report moved, queued or placed the object (retail MoveOrTeleport's result).</returns>
+    /// <returns>True when the report moved, queued or placed the object.</returns>
     /// <exception cref="ArgumentException"><paramref name="p"/> has a non-finite origin or an invalid rotation; nothing changes.</exception>
-    // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450); SmartBox::HandleReceivedPosition (acclient.c:145124)
-    public bool ReceiveRemotePosition(in Position p, bool isNewTeleport, bool hasContact)
+    // retail: SmartBox::HandleReceivedPosition (acclient.c:145124)
+    public bool HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)
     {
         if (!ManagerMath.IsUsable(p))
         {
             throw new ArgumentException("Position must have a finite origin and a valid rotation.", nameof(p));
         }
 
-        if (isNewTeleport || CellId == 0)
+        ushort previousPositionTime = GetUpdateTime(PhysicsTimeStamp.Position);
+        if (!NewerEvent(PhysicsTimeStamp.Position, positionTimestamp))
         {
-            TeleportHookForPositionManager();
-            SetPosition(p, SetPositionFlags.Teleport | SetPositionFlags.Slide | SetPositionFlags.SendPositionEvent);
-        }
-        else
-        {
-            if (!hasContact)
-            {
-                return false;
-            }
-
-            if (PlayerDistance >= PhysicsGlobals.PlayerActivityDistance)
-            {
-                PositionManager?.StopInterpolating();
-                SetPositionSimple(p, true);
-            }
-            else
-            {
-                FollowRemoteReport(p); // retail profile: InterpolateTo(p, IsMovingTo())
-            }
+            return false;
         }
 
-        // SmartBox::HandleReceivedPosition (acclient.c:145227): re-arm the leash at the object's own position.
+        ushort teleportTime = GetUpdateTime(PhysicsTimeStamp.Teleport);
+        bool staleTeleport = Math.Abs(teleportTime - teleportTimestamp) > 0x7FFF
+            ? teleportTime < teleportTimestamp
+            : teleportTimestamp < teleportTime;
+        if (staleTeleport)
+        {
+            _updateTimes[(int)PhysicsTimeStamp.Position] = previousPositionTime;
+            return false;
+        }
+
+        if (!MoveOrTeleport(p, teleportTimestamp, hasContact))
+        {
+            return false;
+        }
+
+        // acclient.c:145227: re-arm the leash at the object's own position.
         ConstrainTo(_position, (float)GetStartConstraintDistance(), (float)GetMaxConstraintDistance());
         return true;
     }
@@ -89,20 +87,5 @@ public sealed partial class PhysicsObj
         float height = (float)target.GetHeight();
         float radius = (float)target.GetRadius();
         pm.StickTo(target.Id, radius, height);
-    }
-
-    // The position-manager part of retail's CPhysicsObj::teleport_hook (acclient.c:322236): UnStick, StopInterpolating,
-    // UnConstrain. (The move-to cancel and the target notifications belong to seams this port does not have.)
-    private void TeleportHookForPositionManager()
-    {
-        PositionManager? pm = PositionManager;
-        if (pm is null)
-        {
-            return;
-        }
-
-        pm.UnStick();
-        pm.StopInterpolating();
-        pm.UnConstrain();
     }
 }

@@ -165,7 +165,8 @@ public sealed partial class PhysicsObj
                         newPos.Frame.SetHeading((float)VelocityHeading(_velocity));
                     }
 
-                    if (World.Transition.FindTransitionalPosition(this, _position, newPos, false, ref _transitionScratch))
+                    TransitionSeam sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Transition : FreeSpaceTransition.Instance;
+                    if (sweep.FindTransitionalPosition(this, _position, newPos, false, ref _transitionScratch))
                     {
                         Vector3 offset = _position.GetOffset(_transitionScratch.CurrentPosition);
                         CachedVelocity = DivideByQuantum(offset, quantum);
@@ -192,15 +193,26 @@ public sealed partial class PhysicsObj
                 CachedVelocity = Vector3.Zero;
             }
 
-            DetectionManager?.CheckDetection();
-            TargetManager?.HandleTargetting();
-            MovementManager?.UseTime();
-            PartArray?.HandleMovement();
-            PositionManager?.UseTime();
+            SceneEffects fx = World.Effects;
+            if ((fx & SceneEffects.RootMotion) != 0)
+            {
+                DetectionManager?.CheckDetection();
+                TargetManager?.HandleTargetting();
+                MovementManager?.UseTime();
+                PartArray?.HandleMovement();
+            }
+
+            if ((fx & SceneEffects.Interpolation) != 0)
+            {
+                PositionManager?.UseTime();
+            }
         }
 
-        ParticleManager?.UpdateParticles();
-        ScriptManager?.UpdateScripts();
+        if ((World.Effects & SceneEffects.ParticlesAndScripts) != 0)
+        {
+            ParticleManager?.UpdateParticles();
+            ScriptManager?.UpdateScripts();
+        }
     }
 
     /// <summary>Builds the step's new frame: root motion, contact scaling, position-manager adjustment, combine, physics,
@@ -209,9 +221,14 @@ public sealed partial class PhysicsObj
     internal void UpdatePositionInternal(float quantum, ref Frame newFrame)
     {
         Frame offset = Frame.Identity;
+        SceneEffects fx = World.Effects;
         if ((_state & PhysicsState.Hidden) == 0)
         {
-            PartArray?.Update(quantum, ref offset);
+            if ((fx & SceneEffects.RootMotion) != 0)
+            {
+                PartArray?.Update(quantum, ref offset);
+            }
+
             Vector3 o = offset.Origin;
             if ((_transientState & TransientState.OnWalkable) != 0)
             {
@@ -224,7 +241,11 @@ public sealed partial class PhysicsObj
             }
         }
 
-        PositionManager?.AdjustOffset(ref offset, quantum);
+        if ((fx & SceneEffects.Interpolation) != 0)
+        {
+            PositionManager?.AdjustOffset(ref offset, quantum);
+        }
+
         ApplyExtrapolation(ref offset, quantum); // fidelity switch; nothing under the retail profile
         CombineForProfile(ref newFrame, offset); // retail profile: newFrame.Combine(_position.Frame, offset)
         if ((_state & PhysicsState.Hidden) == 0)
@@ -232,7 +253,10 @@ public sealed partial class PhysicsObj
             UpdatePhysicsInternal(quantum, ref newFrame);
         }
 
-        ProcessHooks();
+        if ((fx & SceneEffects.Hooks) != 0)
+        {
+            ProcessHooks();
+        }
     }
 
     // retail: Vector3::operator/ (acclient.c:146865): x uses the double reciprocal, y and z its float rounding.

@@ -26,6 +26,12 @@ public sealed partial class PhysicsObj
     private float _friction;
     private float _elasticity;
     private float _translucencyOriginal;
+    private IPartArray? _partArray;
+    private IMovementManager? _movementManager;
+    private IDetectionManager? _detectionManager;
+    private ITargetManager? _targetManager;
+    private IParticleManager? _particleManager;
+    private IScriptManager? _scriptManager;
 
     // retail: CPhysicsObj::CPhysicsObj (acclient.c:319489)
     internal PhysicsObj(PhysicsWorld world, uint id)
@@ -63,10 +69,10 @@ public sealed partial class PhysicsObj
     public PhysicsState State => _state;
 
     /// <summary>Per-frame state bits (retail <c>transient_state</c>).</summary>
-    public TransientState TransientState => _transientState;
+    public TransientState TransientState => _dormancy == Dormancy.PingPong ? LazyTransientState() : _transientState;
 
     /// <summary>True when the ACTIVE transient bit is set: the object is simulated.</summary>
-    public bool IsActive => (_transientState & TransientState.Active) != 0;
+    public bool IsActive => (TransientState & TransientState.Active) != 0;
 
     /// <summary>Velocity in world axes, m/s (retail <c>m_velocityVector</c>). Set with <see cref="SetVelocity"/>.</summary>
     public Vector3 Velocity => _velocity;
@@ -82,13 +88,25 @@ public sealed partial class PhysicsObj
     public Vector3 CachedVelocity { get; private set; }
 
     /// <summary>Client time of the object's last consumed update, seconds (retail <c>update_time</c>).</summary>
-    public double UpdateTime { get; internal set; }
+    public double UpdateTime
+    {
+        get => _dormancy == Dormancy.Awake ? _updateTime : LazyUpdateTime();
+        internal set => _updateTime = value;
+    }
 
     /// <summary>Offset from the player to this object, metres (retail <c>player_vector</c>; (0, 0, 1) until measured).</summary>
-    public Vector3 PlayerVector { get; private set; }
+    public Vector3 PlayerVector
+    {
+        get => _dormancy == Dormancy.Awake ? _playerVector : LazyPlayerVector();
+        private set => _playerVector = value;
+    }
 
     /// <summary>Distance to the player, metres (retail <c>player_distance</c>; float.MaxValue until measured).</summary>
-    public float PlayerDistance { get; private set; }
+    public float PlayerDistance
+    {
+        get => _dormancy == Dormancy.Awake ? _playerDistance : LazyPlayerDistance();
+        private set => _playerDistance = value;
+    }
 
     /// <summary>Friction coefficient in [0, 1] (retail <c>friction</c>, default 0.95): on walkable ground speed decays as (1 - f)^dt.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is NaN or outside [0, 1] (outside, retail's pow would yield NaN or growth).</exception>
@@ -166,36 +184,93 @@ public sealed partial class PhysicsObj
     public bool LastMoveWasAutonomous { get; set; }
 
     /// <summary>The part array and animation seam, or null (retail <c>part_array</c>).</summary>
-    public IPartArray? PartArray { get; set; }
+    public IPartArray? PartArray
+    {
+        get => _partArray;
+        set
+        {
+            Touch();
+            _partArray = value;
+            if (value is SimplePartArray simple)
+            {
+                simple.Owner = this;
+            }
+        }
+    }
 
     /// <summary>The movement manager seam, or null (retail <c>movement_manager</c>). An object without one deactivates itself
     /// when it rests on walkable ground.</summary>
-    public IMovementManager? MovementManager { get; set; }
+    public IMovementManager? MovementManager
+    {
+        get => _movementManager;
+        set
+        {
+            Touch();
+            _movementManager = value;
+        }
+    }
 
     /// <summary>The position manager, or null until <see cref="MakePositionManager"/> (retail <c>position_manager</c>).</summary>
     public PositionManager? PositionManager { get; private set; }
 
     /// <summary>Detection manager seam, or null.</summary>
-    public IDetectionManager? DetectionManager { get; set; }
+    public IDetectionManager? DetectionManager
+    {
+        get => _detectionManager;
+        set
+        {
+            Touch();
+            _detectionManager = value;
+        }
+    }
 
     /// <summary>Target manager seam, or null.</summary>
-    public ITargetManager? TargetManager { get; set; }
+    public ITargetManager? TargetManager
+    {
+        get => _targetManager;
+        set
+        {
+            Touch();
+            _targetManager = value;
+        }
+    }
 
     /// <summary>Particle manager seam, or null (runs for inactive objects too).</summary>
-    public IParticleManager? ParticleManager { get; set; }
+    public IParticleManager? ParticleManager
+    {
+        get => _particleManager;
+        set
+        {
+            Touch();
+            _particleManager = value;
+        }
+    }
 
     /// <summary>Script manager seam, or null (runs for inactive objects too).</summary>
-    public IScriptManager? ScriptManager { get; set; }
+    public IScriptManager? ScriptManager
+    {
+        get => _scriptManager;
+        set
+        {
+            Touch();
+            _scriptManager = value;
+        }
+    }
 
     /// <summary>Sets the persistent state bits (retail <c>set_state</c>, acclient.c:322171, without the lighting and
     /// no-draw side effects, which belong to the renderer).</summary>
-    public void SetState(PhysicsState newState) => _state = newState;
+    public void SetState(PhysicsState newState)
+    {
+        Touch();
+        _state = newState;
+    }
 
     /// <summary>Sets the acceleration directly (retail <c>set_description</c> writes it); normally <see cref="CalcAcceleration"/> does.</summary>
     /// <exception cref="ArgumentException">A component is NaN or infinite.</exception>
     public void SetAcceleration(Vector3 acceleration)
     {
         ThrowIfNotFinite(acceleration, nameof(acceleration));
+        Touch();
         _acceleration = acceleration;
     }
 

@@ -69,10 +69,37 @@ public sealed class SimplePartArray : IPartArray
     public float StepDownHeight { get; set; } = 0.0099999998f;
 
     /// <summary>The sequence's velocity in the object's local axes, m/s (retail <c>CSequence::velocity</c>).</summary>
-    public Vector3 SequenceVelocity { get; set; }
+    public Vector3 SequenceVelocity
+    {
+        get => _sequenceVelocity;
+        set
+        {
+            Owner?.Touch();
+            _sequenceVelocity = value;
+        }
+    }
 
     /// <summary>The sequence's angular velocity in the object's local axes, rad/s (retail <c>CSequence::omega</c>).</summary>
-    public Vector3 SequenceOmega { get; set; }
+    public Vector3 SequenceOmega
+    {
+        get => _sequenceOmega;
+        set
+        {
+            Owner?.Touch();
+            _sequenceOmega = value;
+        }
+    }
+
+    /// <summary>True when the sequence has no velocity and no omega: <see cref="Update"/> leaves the offset at the identity.
+    /// (<see cref="HandleMovementCount"/> counts the visits the scene actually makes.)</summary>
+    public bool IsIdle => _sequenceVelocity == Vector3.Zero && _sequenceOmega == Vector3.Zero;
+
+    /// <summary>The object this part array belongs to (set when assigned to <see cref="PhysicsObj.PartArray"/>), woken when the
+    /// sequence changes.</summary>
+    internal PhysicsObj? Owner { get; set; }
+
+    private Vector3 _sequenceVelocity;
+    private Vector3 _sequenceOmega;
 
     /// <summary>Last frame the object handed to its parts.</summary>
     public Frame Frame => _frame;

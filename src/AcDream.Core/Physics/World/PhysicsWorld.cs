@@ -34,6 +34,9 @@ public sealed partial class PhysicsWorld
         CurrentTime = startTime;
         PhysicsTime = startTime;
         LastUpdate = startTime;
+        _tickTimeNow = _tickTimePrev = startTime;
+        _consumedNow = _consumedPrev = startTime;
+        _pingPongNow = _pingPongPrev = startTime;
         for (int i = 0; i < hookPoolCapacity; i++)
         {
             ReturnFPHook(new FPHook());
@@ -55,7 +58,20 @@ public sealed partial class PhysicsWorld
 
     /// <summary>True while object maintenance is active (retail <c>obj_maint-&gt;is_active</c>): only then are objects farther than
     /// 96 m from the player made inactive. True by default, as in shipped play.</summary>
-    public bool ObjectMaintenanceActive { get; set; } = true;
+    public bool ObjectMaintenanceActive
+    {
+        get => _objectMaintenanceActive;
+        set
+        {
+            if (value != _objectMaintenanceActive)
+            {
+                WakeGatedDormant();
+                _objectMaintenanceActive = value;
+            }
+        }
+    }
+
+    private bool _objectMaintenanceActive = true;
 
     /// <summary>The collision sweep. <see cref="FreeSpaceTransition.Instance"/> by default.</summary>
     public TransitionSeam Transition { get; set; } = FreeSpaceTransition.Instance;
@@ -90,11 +106,18 @@ public sealed partial class PhysicsWorld
                 throw new ArgumentException("The player must be an object of this world.", nameof(value));
             }
 
+            if (value != _player)
+            {
+                WakeGatedDormant();
+                value?.Touch();
+            }
+
             _player = value;
         }
     }
 
-    /// <summary>Object <paramref name="index"/> (0 &lt;= index &lt; <see cref="ObjectCount"/>), in insertion order.</summary>
+    /// <summary>Object <paramref name="index"/> (0 &lt;= index &lt; <see cref="ObjectCount"/>), in ascending id order (objects
+    /// with equal ids in creation order): the order in which a tick visits them.</summary>
     /// <exception cref="ArgumentOutOfRangeException">Index out of range.</exception>
     public PhysicsObj GetObject(int index)
     {
@@ -120,8 +143,23 @@ public sealed partial class PhysicsWorld
             Array.Resize(ref _objects, _objects.Length * 2);
         }
 
-        obj.WorldIndex = _count;
-        _objects[_count++] = obj;
+        // Keep ascending id order (equal ids: creation order) so that a tick visits objects in the same order whatever the
+        // order of creation. Retail walks its hash table; any fixed order is as retail-like as another.
+        int at = _count;
+        while (at > 0 && _objects[at - 1].Id > id)
+        {
+            at--;
+        }
+
+        Array.Copy(_objects, at, _objects, at + 1, _count - at);
+        _objects[at] = obj;
+        _count++;
+        for (int k = at; k < _count; k++)
+        {
+            _objects[k].WorldIndex = k;
+        }
+
+        obj.Touch();
         if (id != 0)
         {
             _byId.TryAdd(id, obj);
@@ -140,6 +178,12 @@ public sealed partial class PhysicsWorld
             throw new ArgumentException("The object is not in this world.", nameof(obj));
         }
 
+        if (obj == _player)
+        {
+            WakeGatedDormant();
+        }
+
+        RemoveFromVisiting(obj);
         int i = obj.WorldIndex;
         Array.Copy(_objects, i + 1, _objects, i, _count - i - 1);
         _count--;
@@ -203,15 +247,24 @@ public sealed partial class PhysicsWorld
             return false;
         }
 
-        PhysicsObj? player = _player;
-        for (int i = 0; i < _count; i++)
+        if (VisitEveryObject)
         {
-            PhysicsObj obj = _objects[i];
-            obj.UpdateObject();
-            if (obj == player)
+            PhysicsObj? player = _player;
+            for (int i = 0; i < _count; i++)
             {
-                PlayerListener?.PlayerPhysicsUpdated(obj);
+                PhysicsObj obj = _objects[i];
+                obj.UpdateObject();
+                if (obj == player)
+                {
+                    PlayerListener?.PlayerPhysicsUpdated(obj);
+                }
             }
+
+            LastTickVisitCount = _count;
+        }
+        else
+        {
+            UseTimeScene();
         }
 
         LastUpdate = CurrentTime;

@@ -75,7 +75,7 @@ public sealed class ReplayResult
 
 /// <summary>
 /// Replays a scenario through a real <see cref="PhysicsWorld"/>: reports are delivered at their arrival times through
-/// <see cref="PhysicsObj.ReceiveRemotePosition"/> (stale sequence numbers dropped, as retail's position timestamp does), the
+/// <see cref="PhysicsObj.HandleReceivedPosition"/> (whose position timestamp drops duplicates and late reports), the
 /// motion state sets the creature's root-motion velocity, a jump report launches it, and the world ticks at each frame.
 /// </summary>
 public static class ReplayRunner
@@ -117,6 +117,8 @@ public static class ReplayRunner
                 result.Delivered++;
                 if (u.Sequence <= lastSeq)
                 {
+                    // Retail drops it too (position timestamp); skipping here keeps the motion state in step.
+                    c.HandleReceivedPosition(u.Position, (ushort)u.Sequence, 0, u.HasContact);
                     continue;
                 }
 
@@ -128,7 +130,7 @@ public static class ReplayRunner
                     c.SetVelocity(u.WorldVelocity);
                 }
 
-                if (c.ReceiveRemotePosition(u.Position, false, u.HasContact))
+                if (c.HandleReceivedPosition(u.Position, (ushort)u.Sequence, 0, u.HasContact))
                 {
                     result.Applied++;
                     atLastReport = ManagerScene.GlobalOf(c.Position);

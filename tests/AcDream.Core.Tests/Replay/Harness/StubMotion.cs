@@ -25,6 +25,12 @@ public sealed class StubMotion : IMovementManager, IMotionInterpreter, IMovement
     /// <summary>IsMovingTo result.</summary>
     public bool MovingTo { get; set; }
 
+    /// <summary>Error code of the last CancelMoveTo, or 0.</summary>
+    public uint LastCancel { get; private set; }
+
+    /// <inheritdoc />
+    public void CancelMoveTo(uint error) => LastCancel = error;
+
     /// <inheritdoc />
     public IMotionInterpreter? MotionInterpreter => HasInterpreter ? this : null;
 

@@ -1,0 +1,236 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>How a dormant object's retail bookkeeping evolves while the scene does not visit it.</summary>
+internal enum Dormancy : byte
+{
+    /// <summary>Visited every world tick.</summary>
+    Awake = 0,
+
+    /// <summary>update_object bails out at once (parented, no cell, frozen): nothing changes.</summary>
+    Bailed,
+
+    /// <summary>Each tick only update_time advances, by retail's consumed-time arithmetic (the world's consumed clock), and the
+    /// player vector is re-measured. ACTIVE stays as it is (clear: static, far, or no player; set: idle but never on walkable).</summary>
+    ConsumedClock,
+
+    /// <summary>Near the player, idle on walkable ground: retail re-activates it every other tick (set_active restarts its
+    /// clock) and it deactivates itself on the next step. ACTIVE and update_time alternate.</summary>
+    PingPong,
+}
+
+public sealed partial class PhysicsObj
+{
+    internal Dormancy _dormancy;
+    internal long _sleepTick;
+    internal bool _sleepPhaseActive;
+    internal bool _inActiveList;
+    internal bool _pendingWake;
+    internal int _queueStamp;
+    internal bool _inGateQueue;
+    private double _updateTime;
+    private Vector3 _playerVector;
+    internal float _playerDistance;
+    internal float _playerDistanceAtSleep;
+
+    /// <summary>True while the scene skips this object because its retail update would change nothing but bookkeeping.</summary>
+    public bool IsDormant => _dormancy != Dormancy.Awake;
+
+    /// <summary>
+    /// Wakes the object if it is dormant: its bookkeeping (ACTIVE bit, update time, player vector) is brought to the values retail
+    /// would hold now, and the scene visits it again from the next point in the tick order. Called by every mutating member.
+    /// </summary>
+    internal void Touch()
+    {
+        if (_dormancy != Dormancy.Awake)
+        {
+            World.WakeDormant(this);
+        }
+        else if (!_inActiveList && !_pendingWake && WorldIndex >= 0)
+        {
+            World.EnqueueWake(this);
+        }
+    }
+
+    /// <summary>Writes the lazily evaluated bookkeeping into the fields (as of the world's last completed visit of this object).</summary>
+    internal void Materialize(bool visitedThisTick)
+    {
+        PhysicsWorld w = World;
+        switch (_dormancy)
+        {
+            case Dormancy.ConsumedClock:
+                _updateTime = visitedThisTick ? w.ConsumedClockNow : w.ConsumedClockPrev;
+                break;
+            case Dormancy.PingPong:
+                bool active = w.PingPongActive(_sleepTick, _sleepPhaseActive, visitedThisTick);
+                _transientState = active ? _transientState | TransientState.Active : _transientState & ~TransientState.Active;
+                _updateTime = active ? w.TickTime(visitedThisTick) : w.PingPongTime(visitedThisTick);
+                break;
+            default:
+                return;
+        }
+
+        if (w.PlayerSeenPosition(this, visitedThisTick, out Position seen))
+        {
+            Vector3 pv = seen.GetOffset(_position);
+            _playerVector = pv;
+            _playerDistance = (float)System.Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+        }
+    }
+
+    private double LazyUpdateTime()
+    {
+        if (_dormancy is Dormancy.ConsumedClock or Dormancy.PingPong)
+        {
+            Materialize(World.IsVisitedThisTick(this));
+        }
+
+        return _updateTime;
+    }
+
+    private TransientState LazyTransientState()
+    {
+        if (_dormancy == Dormancy.PingPong)
+        {
+            Materialize(World.IsVisitedThisTick(this));
+        }
+
+        return _transientState;
+    }
+
+    private Vector3 LazyPlayerVector()
+    {
+        if (_dormancy is Dormancy.ConsumedClock or Dormancy.PingPong)
+        {
+            Materialize(World.IsVisitedThisTick(this));
+        }
+
+        return _playerVector;
+    }
+
+    private float LazyPlayerDistance()
+    {
+        if (_dormancy is Dormancy.ConsumedClock or Dormancy.PingPong)
+        {
+            Materialize(World.IsVisitedThisTick(this));
+        }
+
+        return _playerDistance;
+    }
+
+    /// <summary>
+    /// After a visit: decides whether the next visits would change nothing but the bookkeeping that <see cref="Materialize"/>
+    /// reproduces, and if so which kind of dormancy applies. <paramref name="farMargin"/> receives |distance - 96| for objects
+    /// whose kind depends on the player gate (NaN when it does not).
+    /// </summary>
+    internal Dormancy ClassifyForSleep(out float farMargin)
+    {
+        farMargin = float.NaN;
+        PhysicsWorld w = World;
+        if (w.Player == this)
+        {
+            return Dormancy.Awake;
+        }
+
+        if (Parent is not null || CellId == 0 || (_state & PhysicsState.Frozen) != 0)
+        {
+            return Dormancy.Bailed;
+        }
+
+        // The particle and script seams run on every visit, active or not.
+        if ((ParticleManager is not null || ScriptManager is not null) && (w.Effects & SceneEffects.ParticlesAndScripts) != 0)
+        {
+            return Dormancy.Awake;
+        }
+
+        PhysicsObj? player = w.Player;
+        bool gated = player is not null && w.ObjectMaintenanceActive && (_state & PhysicsState.Static) == 0;
+        if (gated)
+        {
+            farMargin = MathF.Abs(_playerDistance - PhysicsGlobals.PlayerActivityDistance);
+            if (!(farMargin > w.GateSafetyMargin(_playerDistance)))
+            {
+                return Dormancy.Awake; // too close to the 96 m boundary to predict; visit
+            }
+        }
+
+        bool far = gated && _playerDistance > PhysicsGlobals.PlayerActivityDistance;
+        if (far || (_state & PhysicsState.Static) != 0)
+        {
+            // Inactive branch only (far) or never active (static): only update_time advances.
+            // (A static object never runs the active branch, so its hooks and motion never act either.)
+            if ((_transientState & TransientState.Active) != 0 || _updateTime != w.ConsumedClockNow)
+            {
+                return Dormancy.Awake;
+            }
+
+            return Dormancy.ConsumedClock;
+        }
+
+        if (!IsIdleForScene())
+        {
+            return Dormancy.Awake;
+        }
+
+        bool active = (_transientState & TransientState.Active) != 0;
+        if (player is null)
+        {
+            // No player: nobody re-activates it.
+            if (active && (_transientState & TransientState.OnWalkable) != 0)
+            {
+                return Dormancy.Awake; // it deactivates on its next step
+            }
+
+            return _updateTime == w.ConsumedClockNow ? Dormancy.ConsumedClock : Dormancy.Awake;
+        }
+
+        // Near the player (or object maintenance off): set_active(1) every tick.
+        if ((_transientState & TransientState.OnWalkable) != 0)
+        {
+            double expected = active ? w.TickTime(true) : w.PingPongTime(true);
+            return _updateTime == expected ? Dormancy.PingPong : Dormancy.Awake;
+        }
+
+        return active && _updateTime == w.ConsumedClockNow ? Dormancy.ConsumedClock : Dormancy.Awake;
+    }
+
+    /// <summary>
+    /// True when a visit to this (non-far, non-bailed) object changes nothing but the bookkeeping: no motion, no components that
+    /// act on their own, and a frame that <c>combine</c> with the identity offset reproduces bit for bit.
+    /// </summary>
+    private bool IsIdleForScene()
+    {
+        if (MovementManager is not null || DetectionManager is not null || TargetManager is not null
+            || Hooks is not null || _animHookCount != 0 || (Children is not null && Children.Count != 0)
+            || (_state & PhysicsState.Hidden) != 0 || JumpedThisFrame
+            || (_transientState & TransientState.CheckEthereal) != 0)
+        {
+            return false;
+        }
+
+        if (PositionManager is not null && !PositionManager.IsIdle)
+        {
+            return false;
+        }
+
+        if (PartArray is not null && !PartArray.IsIdle)
+        {
+            return false;
+        }
+
+        if (!IsPositiveZero(_velocity) || !IsPositiveZero(CachedVelocity) || _acceleration != Vector3.Zero || _omega != Vector3.Zero)
+        {
+            return false;
+        }
+
+        Frame f = _position.Frame;
+        Frame again = f;
+        again.Combine(f, Frame.Identity);
+        return again.Equals(f);
+    }
+
+    private static bool IsPositiveZero(Vector3 v) =>
+        BitConverter.SingleToInt32Bits(v.X) == 0 && BitConverter.SingleToInt32Bits(v.Y) == 0 && BitConverter.SingleToInt32Bits(v.Z) == 0;
+}

@@ -1,0 +1,518 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The scene side of the world: which objects a tick visits.
+/// </summary>
+/// <remarks>
+/// <para>Retail walks every object every tick. Most objects of a client scene — trees, rocks, items on the ground, anything far
+/// from the player — gain nothing from the visit: their retail update changes only bookkeeping (the ACTIVE bit, update_time, the
+/// player vector). The world keeps those objects <i>dormant</i> and never visits them; that bookkeeping is evaluated lazily, from
+/// a few clocks the world keeps per tick, to exactly the values retail would hold. Everything simulated (frames, velocities, cell
+/// ids, contact state, hooks) is bit-identical to visiting every object (<see cref="VisitEveryObject"/>), which the tests check.</para>
+/// <para>Objects wake on events, not by scanning: any mutating member (velocity, omega, hooks, interpolation, placement, state,
+/// components…) wakes its object; an object whose distance to the player may cross the 96 m gate is re-measured only when the
+/// player has travelled far enough for that to be possible (an odometer queue), so a still player costs nothing.</para>
+/// <para>Objects are visited in ascending id order (then creation order), whatever the order in which they were created or woken.</para>
+/// </remarks>
+public sealed partial class PhysicsWorld
+{
+    private PhysicsObj[] _active = new PhysicsObj[16];
+    private int _activeCount;
+    private PhysicsObj[] _pending = new PhysicsObj[16];
+    private int _pendingCount;
+    private bool _inTick;
+    private long _tick;
+    private long _lastHugeTick = long.MinValue;
+    private double _tickTimePrev, _tickTimeNow;
+    private double _consumedPrev, _consumedNow;
+    private double _pingPongPrev, _pingPongNow;
+    private PhysicsObj? _playerSeenPrev, _playerSeenNow;
+    private Position _playerBeforePrev, _playerAfterPrev, _playerBeforeNow, _playerAfterNow;
+    private PhysicsObj? _current;
+    private double _odometer;
+    private double _odometerBefore;
+    private readonly PriorityQueue<(PhysicsObj Obj, int Stamp), double> _gateQueue = new(64);
+    private int _gateCapacity = 64;
+    private (PhysicsObj Obj, int Stamp)[] _gateScratch = new (PhysicsObj, int)[16];
+    private int _gateLive;
+
+    /// <summary>
+    /// The effects this scene simulates; <see cref="SceneEffects.All"/> (retail) by default. Declare fewer to pay for fewer.
+    /// </summary>
+    public SceneEffects Effects { get; init; } = SceneEffects.All;
+
+    /// <summary>
+    /// When true, every object is visited every tick, as retail walks its object table (for comparison and diagnostics).
+    /// False by default: dormant objects are skipped, with identical simulated results.
+    /// </summary>
+    public bool VisitEveryObject { get; init; }
+
+    /// <summary>Number of objects visited by the last tick (awake objects).</summary>
+    public int LastTickVisitCount { get; private set; }
+
+    /// <summary>Number of objects currently dormant (never visited until an event wakes them).</summary>
+    public int DormantCount => _count - _activeCount - _pendingCount;
+
+    internal double ConsumedClockNow => _consumedNow;
+
+    internal double ConsumedClockPrev => _consumedPrev;
+
+    internal double TickTime(bool visitedThisTick) => visitedThisTick ? _tickTimeNow : _tickTimePrev;
+
+    internal double PingPongTime(bool visitedThisTick) => visitedThisTick ? _pingPongNow : _pingPongPrev;
+
+    /// <summary>Distances within this margin of the 96 m gate are not predicted; the object stays awake.</summary>
+    internal float GateSafetyMargin(float distance) => 1e-3f + distance * 1e-5f;
+
+    /// <summary>True when, during a tick, the object's place in the visiting order has already passed (retail already visited it).</summary>
+    internal bool IsVisitedThisTick(PhysicsObj obj) => !_inTick || (_current is not null && obj.WorldIndex <= _current.WorldIndex);
+
+    /// <summary>ACTIVE after the last (or the previous) tick for a ping-pong object put to sleep after tick <paramref name="sleepTick"/>.</summary>
+    internal bool PingPongActive(long sleepTick, bool sleepActive, bool visitedThisTick)
+    {
+        long n = visitedThisTick ? _tick : _tick - 1;
+        long huge = _lastHugeTick <= n ? _lastHugeTick : long.MinValue;
+        if (huge > sleepTick)
+        {
+            // A stall longer than HugeQuantum leaves every ping-pong object ACTIVE; then they alternate again.
+            return ((n - huge) & 1) == 0;
+        }
+
+        return sleepActive ^ (((n - sleepTick) & 1) == 1);
+    }
+
+    /// <summary>The player's position as this object saw it in its last visit (before or after the player's own update).</summary>
+    internal bool PlayerSeenPosition(PhysicsObj obj, bool visitedThisTick, out Position seen)
+    {
+        PhysicsObj? p = visitedThisTick ? _playerSeenNow : _playerSeenPrev;
+        if (p is null)
+        {
+            seen = default;
+            return false;
+        }
+
+        // Relative order never changes (creation and removal keep it), so the live indexes decide before/after.
+        bool afterPlayer = obj.WorldIndex > p.WorldIndex;
+        seen = visitedThisTick
+            ? (afterPlayer ? _playerAfterNow : _playerBeforeNow)
+            : (afterPlayer ? _playerAfterPrev : _playerBeforePrev);
+        return true;
+    }
+
+    /// <summary>Puts an awake object that is not in the visiting list into the list (before the next visit in order).</summary>
+    internal void EnqueueWake(PhysicsObj obj)
+    {
+        if (_inTick && !IsVisitedThisTick(obj))
+        {
+            InsertActive(obj);
+            return;
+        }
+
+        if (_pendingCount == _pending.Length)
+        {
+            Array.Resize(ref _pending, _pending.Length * 2);
+        }
+
+        _pending[_pendingCount++] = obj;
+        obj._pendingWake = true;
+    }
+
+    /// <summary>Wakes a dormant object: materialises its bookkeeping and schedules its visits.</summary>
+    internal void WakeDormant(PhysicsObj obj)
+    {
+        obj.Materialize(IsVisitedThisTick(obj));
+        obj._dormancy = Dormancy.Awake;
+        GateForget(obj);
+        EnqueueWake(obj);
+    }
+
+    /// <summary>Wakes every dormant object that depends on the player or on object maintenance (they changed).</summary>
+    private void WakeGatedDormant()
+    {
+        for (int i = 0; i < _count; i++)
+        {
+            PhysicsObj o = _objects[i];
+            if (o._dormancy is Dormancy.ConsumedClock or Dormancy.PingPong)
+            {
+                WakeDormant(o);
+            }
+        }
+    }
+
+    private void InsertActive(PhysicsObj obj)
+    {
+        if (_activeCount == _active.Length)
+        {
+            Array.Resize(ref _active, _active.Length * 2);
+        }
+
+        int idx = obj.WorldIndex;
+        int lo = 0, hi = _activeCount;
+        while (lo < hi)
+        {
+            int mid = (lo + hi) >> 1;
+            if (_active[mid].WorldIndex < idx)
+            {
+                lo = mid + 1;
+            }
+            else
+            {
+                hi = mid;
+            }
+        }
+
+        Array.Copy(_active, lo, _active, lo + 1, _activeCount - lo);
+        _active[lo] = obj;
+        _activeCount++;
+        obj._inActiveList = true;
+        if (_inTick && lo <= _activeCursor)
+        {
+            _activeCursor++;
+        }
+    }
+
+    private int _activeCursor;
+
+    private void GateEnqueue(PhysicsObj o, double key)
+    {
+        if (!o._inGateQueue)
+        {
+            o._inGateQueue = true;
+            _gateLive++;
+        }
+
+        if (_gateQueue.Count >= _gateCapacity)
+        {
+            // Stale entries (objects woken since they were queued) are dropped before the queue may grow, so repeated
+            // sleep/wake cycles never allocate; it grows only when live entries fill it.
+            CompactGateQueue();
+            if (_gateQueue.Count >= _gateCapacity / 2)
+            {
+                _gateCapacity = _gateQueue.EnsureCapacity(_gateCapacity * 2);
+            }
+        }
+
+        _gateQueue.Enqueue((o, o._queueStamp), key);
+    }
+
+    private void GateForget(PhysicsObj o)
+    {
+        o._queueStamp++;
+        if (o._inGateQueue)
+        {
+            o._inGateQueue = false;
+            _gateLive--;
+        }
+    }
+
+    /// <summary>Drops stale entries (objects woken since they were queued) so that sleep/wake cycles never grow the queue.</summary>
+    private void CompactGateQueue()
+    {
+        int n = 0;
+        while (_gateQueue.TryDequeue(out (PhysicsObj Obj, int Stamp) e, out double key))
+        {
+            if (e.Obj._queueStamp != e.Stamp || !e.Obj._inGateQueue)
+            {
+                continue;
+            }
+
+            if (n == _gateScratch.Length)
+            {
+                Array.Resize(ref _gateScratch, n * 2);
+                Array.Resize(ref _gateKeys, n * 2);
+            }
+
+            if (_gateKeys.Length < _gateScratch.Length)
+            {
+                Array.Resize(ref _gateKeys, _gateScratch.Length);
+            }
+
+            _gateScratch[n] = e;
+            _gateKeys[n] = key;
+            n++;
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            _gateQueue.Enqueue(_gateScratch[i], _gateKeys[i]);
+            _gateScratch[i] = default;
+        }
+    }
+
+    private double[] _gateKeys = new double[16];
+
+    private void RemoveFromVisiting(PhysicsObj obj)
+    {
+        GateForget(obj);
+        if (obj._inActiveList)
+        {
+            int at = Array.IndexOf(_active, obj, 0, _activeCount);
+            Array.Copy(_active, at + 1, _active, at, _activeCount - at - 1);
+            _activeCount--;
+            _active[_activeCount] = null!;
+            obj._inActiveList = false;
+            if (_inTick && at <= _activeCursor)
+            {
+                _activeCursor--;
+            }
+        }
+
+        if (obj._pendingWake)
+        {
+            int at = Array.IndexOf(_pending, obj, 0, _pendingCount);
+            Array.Copy(_pending, at + 1, _pending, at, _pendingCount - at - 1);
+            _pendingCount--;
+            _pending[_pendingCount] = null!;
+            obj._pendingWake = false;
+        }
+
+        obj._dormancy = Dormancy.Awake;
+    }
+
+    private void MergePending()
+    {
+        for (int i = 0; i < _pendingCount; i++)
+        {
+            PhysicsObj o = _pending[i];
+            _pending[i] = null!;
+            o._pendingWake = false;
+            if (o.WorldIndex >= 0 && !o._inActiveList && o._dormancy == Dormancy.Awake)
+            {
+                InsertActive(o);
+            }
+        }
+
+        _pendingCount = 0;
+    }
+
+    /// <summary>Retail's consumed-time arithmetic of update_object, without the steps: the update_time an idle object ends with.</summary>
+    private double Consume(double updateTime, double now)
+    {
+        PhysicsProfile p = Profile;
+        double dt = now - updateTime;
+        double t = updateTime;
+        if (p.AccumulateBelowMinQuantum)
+        {
+            if (dt < p.MinQuantum)
+            {
+                return updateTime;
+            }
+
+            if (dt > p.HugeQuantum)
+            {
+                return now;
+            }
+
+            while (dt > p.MaxQuantum)
+            {
+                t += p.MaxQuantum;
+                dt -= p.MaxQuantum;
+            }
+
+            if (dt > p.MinQuantum)
+            {
+                t += dt;
+            }
+
+            return t;
+        }
+
+        if (!(dt > PhysicsGlobals.Epsilon) || dt > p.HugeQuantum)
+        {
+            return now;
+        }
+
+        if (dt > p.MaxQuantum)
+        {
+            do
+            {
+                t += p.MaxQuantum;
+                dt -= p.MaxQuantum;
+            }
+            while (dt > p.MaxQuantum);
+
+            if (dt > p.MinQuantum)
+            {
+                t += dt;
+            }
+
+            return t;
+        }
+
+        return t + dt;
+    }
+
+    /// <summary>The scene's world tick: visits the awake objects in order, wakes those the player's travel may have carried across
+    /// the 96 m gate, and puts to sleep those whose next visits would change nothing.</summary>
+    private void UseTimeScene()
+    {
+        _tick++;
+        _tickTimePrev = _tickTimeNow;
+        _tickTimeNow = CurrentTime;
+        if (CurrentTime - LastUpdate > Profile.HugeQuantum)
+        {
+            _lastHugeTick = _tick;
+        }
+
+        _consumedPrev = _consumedNow;
+        _consumedNow = Consume(_consumedNow, CurrentTime);
+        _pingPongPrev = _pingPongNow;
+        _pingPongNow = Consume(LastUpdate, CurrentTime);
+        bool hadPlayer = _playerSeenNow is not null;
+        _playerSeenPrev = _playerSeenNow;
+        _playerBeforePrev = _playerBeforeNow;
+        _playerAfterPrev = _playerAfterNow;
+
+        PhysicsObj? player = _player;
+        _playerSeenNow = player;
+        if (player is not null)
+        {
+            _playerBeforeNow = player._position;
+            if (hadPlayer)
+            {
+                _odometer += Travel(_playerAfterPrev, _playerBeforeNow);
+            }
+
+            _odometerBefore = _odometer;
+            _playerAfterNow = _playerBeforeNow;
+        }
+
+        MergePending();
+        _inTick = true;
+        bool checkedAfterPlayer = player is null;
+        if (player is not null)
+        {
+            // Objects ordered before the player see its position before its update.
+            PopGateCandidates(_odometerBefore, beforePlayer: true);
+        }
+
+        int visits = 0;
+        for (_activeCursor = 0; _activeCursor < _activeCount; _activeCursor++)
+        {
+            PhysicsObj obj = _active[_activeCursor];
+            _current = obj;
+            obj.UpdateObject();
+            visits++;
+            if (obj == player)
+            {
+                PlayerListener?.PlayerPhysicsUpdated(obj);
+                _playerAfterNow = player._position;
+                _odometer += Travel(_playerBeforeNow, _playerAfterNow);
+                PopGateCandidates(_odometer, beforePlayer: false);
+                checkedAfterPlayer = true;
+            }
+        }
+
+        if (!checkedAfterPlayer && player is not null)
+        {
+            // The player is dormant-proof, so it is always in the list; this covers a player with no cell (bails) too.
+            PopGateCandidates(_odometer, beforePlayer: false);
+        }
+
+        _inTick = false;
+        _current = null;
+        LastTickVisitCount = visits;
+        PutIdleToSleep();
+    }
+
+    private static double Travel(in Position a, in Position b)
+    {
+        Vector3 d = a.GetOffset(b);
+        return Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y + (double)d.Z * d.Z);
+    }
+
+    /// <summary>Re-measures the dormant gated objects whose margin the player's travel may have used up; those that crossed the
+    /// 96 m gate are woken (and visited later in this same tick, in order).</summary>
+    private void PopGateCandidates(double odometer, bool beforePlayer)
+    {
+        int n = 0;
+        int playerIndex = _player is null ? -1 : _player.WorldIndex;
+        while (_gateQueue.TryPeek(out (PhysicsObj Obj, int Stamp) e, out double key) && key <= odometer)
+        {
+            _gateQueue.Dequeue();
+            if (e.Obj._queueStamp != e.Stamp || e.Obj._dormancy == Dormancy.Awake || e.Obj.WorldIndex < 0)
+            {
+                continue; // stale entry
+            }
+
+            GateForget(e.Obj); // re-queued below unless it wakes
+
+            if (n == _gateScratch.Length)
+            {
+                Array.Resize(ref _gateScratch, n * 2);
+            }
+
+            _gateScratch[n++] = e;
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            PhysicsObj o = _gateScratch[i].Obj;
+            _gateScratch[i] = default;
+            bool objBeforePlayer = o.WorldIndex < playerIndex;
+            if (beforePlayer != objBeforePlayer && beforePlayer)
+            {
+                // Ordered after the player: decided once the player has moved this tick.
+                GateEnqueue(o, odometer);
+                continue;
+            }
+
+            Position seen = objBeforePlayer ? _playerBeforeNow : _playerAfterNow;
+            double seenOdo = objBeforePlayer ? _odometerBefore : _odometer;
+            Vector3 pv = seen.GetOffset(o._position);
+            double d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+            float df = (float)d;
+            bool wasFar = o._playerDistanceAtSleep > PhysicsGlobals.PlayerActivityDistance;
+            bool isFar = d > PhysicsGlobals.PlayerActivityDistance;
+            float margin = MathF.Abs(df - PhysicsGlobals.PlayerActivityDistance);
+            if (wasFar != isFar || !(margin > GateSafetyMargin(df)))
+            {
+                // It crossed (or is too close to call): wake it; it is visited later in this tick, in order.
+                WakeDormant(o);
+                continue;
+            }
+
+            o._playerDistanceAtSleep = df;
+            GateEnqueue(o, seenOdo + margin - GateSafetyMargin(df));
+        }
+    }
+
+    /// <summary>After the visits: objects whose next visits would change nothing but bookkeeping leave the visiting list.</summary>
+    private void PutIdleToSleep()
+    {
+        int w = 0;
+        for (int i = 0; i < _activeCount; i++)
+        {
+            PhysicsObj o = _active[i];
+            Dormancy d = o.ClassifyForSleep(out float margin);
+            if (d == Dormancy.Awake)
+            {
+                _active[w++] = o;
+                continue;
+            }
+
+            o._inActiveList = false;
+            o._dormancy = d;
+            o._sleepTick = _tick;
+            o._sleepPhaseActive = (o._transientState & TransientState.Active) != 0;
+            GateForget(o);
+            o._playerDistanceAtSleep = o._playerDistance;
+            if (!float.IsNaN(margin) && d != Dormancy.Bailed)
+            {
+                double seenOdo = _player is not null && o.WorldIndex < _player.WorldIndex ? _odometerBefore : _odometer;
+                GateEnqueue(o, seenOdo + margin - GateSafetyMargin(o._playerDistance));
+            }
+        }
+
+        for (int i = w; i < _activeCount; i++)
+        {
+            _active[i] = null!;
+        }
+
+        _activeCount = w;
+    }
+}
