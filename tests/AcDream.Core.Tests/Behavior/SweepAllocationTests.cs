@@ -19,13 +19,17 @@ public class SweepAllocationTests
         for (int i = 0; i < walkers.Length; i++)
         {
             uint cell = SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 3, 7);
-            walkers[i] = SweepScene.Walker(world, new Position(cell, Frame.FromHeading(new Vector3(80f + 3f * i, 185f, 20f), 30f + 20f * i)), id: (uint)(i + 1));
+            walkers[i] = SweepScene.Walker(world, new Position(cell, Frame.FromHeading(new Vector3(86f + 2f * i, 186f, 20f), 90f * i)), id: (uint)(i + 1));
             SweepScene.SetWalk(walkers[i], new Vector3(0f, 4f, 0f));
+            // Circles of 4 / 0.5 = 8 m radius: periodic paths (one lap is 2 pi / 0.5 = 12.6 s = 252 ticks) that cross the
+            // landblock edge (y = 192), the foot of the slope (x = 96) and cell edges, so the warm-up visits every branch
+            // (and lets tiered compilation settle) before the measured ticks repeat them.
+            ((SimplePartArray)walkers[i].PartArray!).SequenceOmega = new Vector3(0f, 0f, 0.5f);
         }
 
-        SweepScene.Run(world, 20);
+        SweepScene.Run(world, 600);
         long before = GC.GetAllocatedBytesForCurrentThread();
-        for (int i = 0; i < 100; i++)
+        for (int i = 0; i < 300; i++)
         {
             world.Tick(world.CurrentTime + SweepScene.Dt);
         }

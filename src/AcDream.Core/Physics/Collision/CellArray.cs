@@ -69,12 +69,14 @@ public sealed class CellArray
     }
 
     /// <summary>Removes the entry at <paramref name="index"/> by moving the last entry into its place.</summary>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="index"/> is not below <see cref="NumCells"/> (retail does
+    /// not check; nothing is changed).</exception>
     // retail: CELLARRAY::remove_cell (acclient.c:718761)
     public void RemoveCell(int index)
     {
-        if (NumCells == 0)
+        if ((uint)index >= (uint)NumCells)
         {
-            return;
+            throw new ArgumentOutOfRangeException(nameof(index));
         }
 
         NumCells--;

@@ -45,10 +45,16 @@ public sealed class RetailTransition : TransitionSeam
     /// Returns the transition (already given back to the pool, readable until the next sweep) or null when the sweep
     /// failed or all ten transitions were in use.
     /// </summary>
+    /// <exception cref="ArgumentException">A position has a NaN or infinite origin (nothing is changed).</exception>
     // retail: CPhysicsObj::transition (acclient.c:320060)
     public Transition? Transition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove)
     {
         ArgumentNullException.ThrowIfNull(obj);
+        if (!VectorMath.IsFinite(oldPos.Frame.Origin) || !VectorMath.IsFinite(newPos.Frame.Origin))
+        {
+            throw new ArgumentException("Sweep positions must have finite origins.", nameof(newPos));
+        }
+
         Transition? t = Pool.Make();
         if (t is null)
         {
