@@ -105,6 +105,9 @@ internal sealed class SvgChart
             y1 += 0.5;
         }
 
+        double padX = (x1 - x0) * 0.04;
+        x0 -= padX;
+        x1 += padX;
         double padY = (y1 - y0) * 0.05;
         y0 -= padY;
         y1 += padY;
