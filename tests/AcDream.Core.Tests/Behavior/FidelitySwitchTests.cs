@@ -149,6 +149,55 @@ public class FidelitySwitchTests
         Assert.Equal(Vector3.Zero, snap.ExtrapolationVelocity);
     }
 
+    [Fact]
+    public void NonRetailSwitches_SteadyStateTick_AllocatesNothing()
+    {
+        // Float32 arithmetic, no renormalisation, extrapolating remote objects: the switches' code paths must keep the tick
+        // allocation-free like the retail path (reports included: they place the body and store the estimate in place).
+        PhysicsProfile p = PhysicsProfile.Retail.With(ArithmeticMode.Float32, 0, 2f, RemoteSmoothing.LinearExtrapolation);
+        var world = new PhysicsWorld(0.0, p) { Transition = new FlatGroundTransition() };
+        PhysicsObj player = world.CreateObject(1);
+        player.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f };
+        Assert.True(player.EnterWorld(ManagerScene.At(new Vector3(60f, 60f, 0f))));
+        world.Player = player;
+        var creatures = new PhysicsObj[20];
+        for (int i = 0; i < creatures.Length; i++)
+        {
+            PhysicsObj c = world.CreateObject((uint)(i + 2));
+            c.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f, SequenceOmega = new Vector3(0f, 0f, 0.5f) };
+            Assert.True(c.EnterWorld(ManagerScene.At(new Vector3(40f + i, 50f, 0f))));
+            creatures[i] = c;
+        }
+
+        double t = 0;
+        ushort stamp = 0;
+        void Run(int ticks)
+        {
+            for (int k = 0; k < ticks; k++)
+            {
+                t += 0.05;
+                if (k % 4 == 0)
+                {
+                    stamp++;
+                    world.SetCurrentTime(t);
+                    foreach (PhysicsObj c in creatures)
+                    {
+                        Position r = c.Position;
+                        r.Frame.Origin += new Vector3(0f, 0.5f, 0f);
+                        c.HandleReceivedPosition(r, stamp, 0, true);
+                    }
+                }
+
+                world.Tick(t);
+            }
+        }
+
+        Run(20); // warm-up (JIT, position managers created on the first report)
+        long before = GC.GetAllocatedBytesForCurrentThread();
+        Run(40);
+        Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+    }
+
     private static PhysicsObj Spinner(PhysicsProfile profile)
     {
         var world = new PhysicsWorld(0.0, profile);
