@@ -150,6 +150,8 @@ internal static class AccuracyReport
             string choice = scale == 1f ? "step = radius (retail)" : $"step = {scale} × radius";
             ctx.Measure(sw, SweepTunnelScene.Name, choice, scale == 1f, SweepTunnelScene.Reference, "m",
                 () => new SweepTunnelScene(p, Pacing.Fps30, ctx.Seconds(3.0, 0.5)));
+            ctx.Measure(sw, ThinWallScene.Name, choice, scale == 1f, ThinWallScene.Reference, "m",
+                () => new ThinWallScene(p, Pacing.Fps30, ctx.Seconds(1.5, 0.5)));
             MeasureAgainstFine(ctx, sw, LedgeJumpScene.Name, choice, scale == 1f, ctx.Seconds(6.0, 1.0),
                 (prof, pc, s) => new LedgeJumpScene(prof, pc, s), p, Pacing.Fps30);
         }

@@ -63,13 +63,13 @@ internal static class TerrainKit
     public static PhysicsWorld World(TerrainWorld terrain, PhysicsProfile profile) =>
         new(0.0, profile) { Transition = new RetailTransition(terrain) };
 
-    /// <summary>A creature: one 0.5 m sphere resting on its origin, step heights 0.6 m, a movement manager (stays active),
+    /// <summary>A creature: one sphere (0.5 m by default) resting on its origin, step heights 0.6 m, a movement manager (stays active),
     /// <paramref name="state"/> (retail's default when null), placed at <paramref name="p"/>.</summary>
-    public static PhysicsObj Walker(PhysicsWorld world, in Position p, uint id, PhysicsState? state = null)
+    public static PhysicsObj Walker(PhysicsWorld world, in Position p, uint id, PhysicsState? state = null, float radius = 0.5f)
     {
         PhysicsObj obj = world.CreateObject(id);
-        var parts = new SimplePartArray(1, 0) { StepUpHeight = 0.6f, StepDownHeight = 0.6f, Radius = 0.5f, Height = 1.8f };
-        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
+        var parts = new SimplePartArray(1, 0) { StepUpHeight = 0.6f, StepDownHeight = 0.6f, Radius = radius, Height = 1.8f };
+        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, radius), radius) });
         obj.PartArray = parts;
         obj.MovementManager = new BasicMovementManager();
         if (state is not null)

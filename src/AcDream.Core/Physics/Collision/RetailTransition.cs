@@ -126,7 +126,7 @@ public sealed class RetailTransition : TransitionSeam
             t.InitObject(obj, ObjectInfoState.None);
             InitSpheres(t, obj);
             Position p = pos;
-            ObjCell? cell = AdjustPosition(ref p);
+            ObjCell? cell = AdjustPosition(ref p, t.SpherePath.LocalSphere[0].Center);
             if (cell is null)
             {
                 obj.GoToLostCell(p);
@@ -293,8 +293,8 @@ public sealed class RetailTransition : TransitionSeam
         }
     }
 
-    // retail: CPhysicsObj::AdjustPosition (acclient.c:319116), outdoor branch; interior cells with issue 6
-    private ObjCell? AdjustPosition(ref Position p)
+    // retail: CPhysicsObj::AdjustPosition (acclient.c:319116); indoor branch without the outdoor fallback
+    private ObjCell? AdjustPosition(ref Position p, Vector3 spherePoint)
     {
         uint low = p.ObjCellId & 0xFFFF;
         if (!((low >= 1 && low <= 0x40) || (low >= 0x100 && low <= 0xFFFD) || low == 0xFFFF))
@@ -304,7 +304,21 @@ public sealed class RetailTransition : TransitionSeam
 
         if (low >= LandDefs.FirstEnvCell)
         {
-            return null;
+            // Indoor: the cell itself or a neighbour that contains the first sphere's centre. Retail (bSearchCells = 1)
+            // searches the cell's stab list of visible cells; we search its portal neighbours, and retail's fallback to
+            // the outdoors for cells seen from outside is not ported (docs/divergences.md, "Indoor SetPosition").
+            if (Cells.GetVisible(p.ObjCellId) is not EnvCell env)
+            {
+                return null;
+            }
+
+            EnvCell? child = env.FindVisibleChildCell(Cells, p.LocalToGlobal(p, spherePoint));
+            if (child is not null)
+            {
+                p.ObjCellId = child.CellId;
+            }
+
+            return child;
         }
 
         LandDefs.AdjustToOutside(ref p.ObjCellId, ref p.Frame.Origin);

@@ -7,7 +7,7 @@ namespace AcDream.Core.Physics;
 public sealed partial class LandCell : ObjCell
 {
     /// <summary>
-    /// The terrain, then buildings (none yet), then objects (issue 6) against the check spheres.
+    /// The terrain, then the building (<see cref="Building"/>), then objects against the check spheres.
     /// </summary>
     // retail: CLandCell::find_collisions (acclient.c:354886)
     public override TransitionState FindCollisions(Transition transition)
@@ -15,7 +15,11 @@ public sealed partial class LandCell : ObjCell
         TransitionState ts = FindEnvCollisions(transition);
         if (ts == TransitionState.Ok)
         {
-            // CSortCell::find_collisions (acclient.c:356106): OK without a building.
+            ts = FindBuildingCollisions(transition);
+        }
+
+        if (ts == TransitionState.Ok)
+        {
             ts = FindObjCollisions(transition);
         }
 
@@ -61,10 +65,13 @@ public sealed partial class LandCell : ObjCell
         return oi.ValidateWalkable(check, walkable.Plane, WaterType != WaterType.NotWater, waterDepth, path, transition.CollisionInfo, Id);
     }
 
-    /// <summary>The outdoor cells around the spheres (added once per list) and, later, building portals (issue 6).</summary>
+    /// <summary>The outdoor cells around the spheres (added once per list) and the indoor cells behind the building's doors.</summary>
     // retail: CLandCell::find_transit_cells (acclient.c:355422)
     public override void FindTransitCells(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
     {
         CellList.AddAllOutsideCells(cells, p, spheres, cellArray);
+
+        // retail: CSortCell::find_transit_cells (acclient.c:356086) -> CBuildingObj::find_building_transit_cells
+        Building?.FindBuildingTransitCells(cells, spheres, cellArray, path);
     }
 }

@@ -1,0 +1,98 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>How a sphere lies against an indoor cell's region (<see cref="BspTree.SphereIntersectsCellBsp(in Sphere)"/>).</summary>
+public enum CellBspSphere
+{
+    /// <summary>The sphere is outside the cell (retail 0).</summary>
+    Outside = 0,
+
+    /// <summary>The sphere crosses the cell's boundary (retail 1).</summary>
+    Crossing = 1,
+
+    /// <summary>The sphere is wholly inside the cell (retail 2).</summary>
+    Inside = 2,
+}
+
+/// <summary>The cell BSP tests: an indoor cell's region as a chain of planes through the positive children.</summary>
+public sealed partial class BspTree
+{
+    /// <summary>Margin added to the radius by the cell-region sphere test, metres. Retail: 0.0099999998 (acclient.c:362979).</summary>
+    public const float CellSphereMargin = 0.0099999998f;
+
+    /// <summary>
+    /// True when <paramref name="origin"/> (cell-local) is not behind any plane of the chain by more than EPSILON
+    /// (in-plane counts as inside).
+    /// </summary>
+    // retail: BSPTREE::point_inside_cell_bsp (acclient.c:360730) -> BSPNODE::point_inside_cell_bsp (acclient.c:362943)
+    public bool PointInsideCellBsp(Vector3 origin)
+    {
+        int i = Root;
+        while (true)
+        {
+            ref readonly BspNode n = ref _nodes[i];
+            Plane p = n.SplittingPlane;
+            double d = (double)p.N.Y * origin.Y + (double)p.N.Z * origin.Z + (double)p.N.X * origin.X + p.D;
+            if (d <= PhysicsGlobals.Epsilon && d < -PhysicsGlobals.Epsilon)
+            {
+                return false;
+            }
+
+            if (n.PosNode < 0)
+            {
+                return true;
+            }
+
+            i = n.PosNode;
+        }
+    }
+
+    /// <summary>
+    /// Where the sphere (cell-local) lies against the cell region, with the radius widened by
+    /// <see cref="CellSphereMargin"/>: outside once it is that far behind any plane, inside when that far in front of
+    /// every plane, crossing otherwise.
+    /// </summary>
+    // retail: BSPTREE::sphere_intersects_cell_bsp (acclient.c:360736) -> BSPNODE::sphere_intersects_cell_bsp (acclient.c:362979)
+    public CellBspSphere SphereIntersectsCellBsp(in Sphere sphere) => SphereIntersectsCellBsp(Root, sphere);
+
+    private CellBspSphere SphereIntersectsCellBsp(int i, in Sphere sphere)
+    {
+        ref readonly BspNode n = ref _nodes[i];
+        Vector3 c = sphere.Center;
+        Plane p = n.SplittingPlane;
+        double d = (double)p.N.Y * c.Y + (double)p.N.Z * c.Z + (double)p.N.X * c.X + p.D;
+        float r = (float)(sphere.Radius + (double)CellSphereMargin);
+        if (d <= -r)
+        {
+            return CellBspSphere.Outside;
+        }
+
+        while (true)
+        {
+            int next = n.PosNode;
+            if (d < r)
+            {
+                if (next < 0)
+                {
+                    return CellBspSphere.Crossing;
+                }
+
+                return SphereIntersectsCellBsp(next, sphere) != CellBspSphere.Outside ? CellBspSphere.Crossing : CellBspSphere.Outside;
+            }
+
+            if (next < 0)
+            {
+                return CellBspSphere.Inside;
+            }
+
+            n = ref _nodes[next];
+            p = n.SplittingPlane;
+            d = (double)p.N.Y * c.Y + (double)p.N.Z * c.Z + (double)p.N.X * c.X + p.D;
+            if (d <= -r)
+            {
+                return CellBspSphere.Outside;
+            }
+        }
+    }
+}
