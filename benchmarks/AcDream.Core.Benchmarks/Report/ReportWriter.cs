@@ -48,6 +48,8 @@ internal static class ReportWriter
             sb.AppendLine();
             sb.AppendLine($"![error against cost: {sw}]({ChartFile(sw)})");
             sb.AppendLine();
+            sb.AppendLine("(Both axes logarithmic; each marker is a row, labelled with its choice; rows with zero error are not drawn.)");
+            sb.AppendLine();
             sb.AppendLine("| scene | choice | reference | frames | error | ns/frame | µs per sim s | B/frame | note |");
             sb.AppendLine("|---|---|---|---:|---:|---:|---:|---:|---|");
             foreach (ReportRow r in ctx.Rows)
@@ -161,7 +163,7 @@ internal static class ReportWriter
                 {
                     if (r.Switch == sw && r.Scene == scene && r.Reference != "(is the reference)")
                     {
-                        pts.Add((perSimSecond ? r.NsPerSimSecond / 1000.0 : r.NsPerFrame, Math.Max(r.Error, 1e-9)));
+                        pts.Add((perSimSecond ? r.NsPerSimSecond / 1000.0 : r.NsPerFrame, r.Error)); // zero errors cannot sit on the log axis
                         labels.Add(Short(r));
                     }
                 }
