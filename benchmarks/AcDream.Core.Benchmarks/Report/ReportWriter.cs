@@ -29,10 +29,11 @@ internal static class ReportWriter
         sb.AppendLine();
         sb.AppendLine("Columns: **error** in the unit given (m or degrees); **ns/frame** is the time of one client frame (`PhysicsWorld.Tick`,");
         sb.AppendLine("which runs `update_object` on every object when at least 1/30 s has passed); **µs per sim s** is the time to simulate");
-        sb.AppendLine("one second of the scene (compare frame rates with this one); **B/frame** is managed allocation per frame.");
+        sb.AppendLine("one second of the scene (compare frame rates with this one); **B/frame** is managed allocation per frame in the second");
+        sb.AppendLine("half of a run (steady state: a fresh world grows its buffers once in its first frames).");
         sb.AppendLine("Rows marked ★ are retail. Times include every object of the scene (1 to 16).");
         sb.AppendLine();
-        sb.AppendLine("References: closed forms where they exist (free fall with the 50 m/s clamp, friction decay `v0 (1-f)^t`, constant spin,");
+        sb.AppendLine("References: closed forms where they exist (free fall before the 50 m/s clamp, friction decay `v0 (1-f)^t`, constant spin,");
         sb.AppendLine("projectile arc), evaluated at the object's consumed physics time (`update_time`), so the error is the integration's");
         sb.AppendLine("and not the display lag of a frame that ran no step. Otherwise a fine-step run of the same scene: retail profile, double");
         sb.AppendLine("intermediates, `update_object` called directly every 1/600 s; error = the largest distance from it at equal physics time.");
