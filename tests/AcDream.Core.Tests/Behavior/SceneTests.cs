@@ -153,7 +153,7 @@ public class SceneTests
     }
 
     [Fact]
-    public void SceneWithoutGravity_DoesNotAccelerate_AndWithoutHooks_DoesNotFade()
+    public void SceneWithoutGravity_DoesNotAccelerate_AndWithoutHooks_FadesApplyAtOnce()
     {
         var w = new PhysicsWorld(0.0) { Effects = SceneEffects.All & ~(SceneEffects.Gravity | SceneEffects.Hooks) };
         PhysicsObj o = SceneTestContext.Add(w, 5, SceneTestContext.At(60f, 50f, 20f));
@@ -171,7 +171,9 @@ public class SceneTests
         // Constant velocity, no gravity: z unchanged at 20, x advanced by about 1 m.
         Assert.Equal(20f, o.Position.Frame.Origin.Z);
         Assert.InRange(o.Position.Frame.Origin.X, 60.9f, 61.1f);
-        Assert.Equal(0f, o.Translucency);
+        // Without the Hooks effect a fade is not a hook: it takes its end value at once and no hook list exists.
+        Assert.Equal(1f, o.Translucency);
+        Assert.Null(o.Hooks);
     }
 
     [Fact]

@@ -9,7 +9,7 @@ namespace AcDream.Core.Physics;
 /// (acclient.h:30915, PORTAL/ccell/CObjCell.c) and its virtual table; <see cref="LandCell"/> (outdoor terrain) is the
 /// only kind today — env cells, buildings and object shadows arrive with issue 6.
 /// </summary>
-public abstract class ObjCell
+public abstract partial class ObjCell
 {
     /// <summary>The cell id (0xXXYYCCCC). Retail: <c>m_DID.id</c>.</summary>
     public abstract uint Id { get; }
@@ -49,9 +49,9 @@ public abstract class ObjCell
     public virtual TransitionState CheckEntryRestrictions(Transition transition) =>
         transition.ObjectInfo.Object is null ? TransitionState.Collided : TransitionState.Ok;
 
-    /// <summary>The objects whose shadows lie in the cell against the check spheres (issue 6; none yet).</summary>
+    /// <summary>The objects whose shadows lie in the cell against the check spheres (ObjCell.Shadows.cs).</summary>
     // retail: CObjCell::find_obj_collisions (acclient.c:347141)
-    public virtual TransitionState FindObjCollisions(Transition transition) => TransitionState.Ok;
+    public virtual TransitionState FindObjCollisions(Transition transition) => FindShadowObjCollisions(transition);
 }
 
 /// <summary>

@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics;
 /// The moving object as the sweep sees it: its state bits, scale and step heights. Retail: <c>OBJECTINFO</c>
 /// (acclient.h:52284, PORTAL/cphysics/CObjectInfo.c).
 /// </summary>
-public sealed class ObjectInfo
+public sealed partial class ObjectInfo
 {
     /// <summary>The object being moved (null for a bare sweep). Retail: <c>object</c>.</summary>
     public PhysicsObj? Object;
@@ -51,7 +51,7 @@ public sealed class ObjectInfo
         StepDownHeight = (float)obj.GetStepDownHeight();
         Ethereal = (obj.State & PhysicsState.Ethereal) != 0;
         StepDown = (obj.State & PhysicsState.Missile) == 0;
-        // Retail also ORs IS_IMPENETRABLE / IS_PLAYER / IS_PK / IS_PKLITE from the weenie; there is no weenie in the core.
+        AddWeenieState(obj.Weenie);
     }
 
     /// <summary>True when <paramref name="normal"/> is steep enough to stand on (N.z &gt;= floor_z).</summary>

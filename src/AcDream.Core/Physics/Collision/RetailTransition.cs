@@ -9,7 +9,7 @@ namespace AcDream.Core.Physics;
 /// retail's <c>CPhysicsObj::transition</c> moves it, and answers placements and the collision response.
 /// </summary>
 /// <remarks>One instance per world: it owns the world's <see cref="TransitionPool"/>. Nothing here allocates per call.</remarks>
-public sealed class RetailTransition : TransitionSeam
+public sealed partial class RetailTransition : TransitionSeam
 {
     private Transition? _committed;
 
@@ -186,14 +186,18 @@ public sealed class RetailTransition : TransitionSeam
         bool applyBounce = !prevOnWalkable || !onWalkable || (obj._state & PhysicsState.Sledding) != 0;
         bool reported = false;
 
-        // Object collisions (track_object_collision, report_collision_end) arrive with issue 6.
+        if (HandleObjectCollisions(obj, collisions, prevContact))
+        {
+            reported = true;
+        }
+
         if (obj.CollidingWithEnvironment)
         {
             obj.CollidingWithEnvironment = collisions.CollidedWithEnvironment;
         }
         else if (collisions.CollidedWithEnvironment || (!prevOnWalkable && onWalkable))
         {
-            reported = ReportEnvironmentCollision(obj, prevContact);
+            reported = ReportEnvironmentCollision(obj, prevContact) || reported;
         }
 
         int fsf = collisions.FramesStationaryFall;

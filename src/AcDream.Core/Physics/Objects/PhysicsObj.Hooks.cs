@@ -269,6 +269,14 @@ public sealed partial class PhysicsObj
 
     private void AddFPHook(PhysicsHookType type, double delta, float start, float end, uint userData)
     {
+        if ((World.Effects & SceneEffects.Hooks) == 0)
+        {
+            // A scene without hooks never walks a hook list: the fade takes its end value at once (no hook is created, so
+            // none can pile up unprocessed).
+            ProcessFPHook(type, end, userData);
+            return;
+        }
+
         FPHook hook = World.RentFPHook(type, World.PhysicsTime, delta, start, end, userData);
         AddHook(hook);
     }

@@ -249,6 +249,7 @@ public sealed partial class PhysicsObj
     public void GoToLostCell(in Position p)
     {
         Touch();
+        RemoveShadowsFromCells();
         LeaveCell();
         StorePosition(p);
         _transientState &= ~TransientState.Active;

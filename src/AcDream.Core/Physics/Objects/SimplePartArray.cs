@@ -8,7 +8,7 @@ namespace AcDream.Core.Physics;
 /// list, which moves the local frame only by the sequence's own velocity and omega (<c>CSequence::apply_physics</c>).
 /// It records the visual values that hooks apply so a client (or a test) can read them.
 /// </summary>
-public sealed class SimplePartArray : IPartArray
+public sealed partial class SimplePartArray : IPartArray
 {
     private readonly float[] _partTranslucency;
     private readonly float[] _partLuminosity;
@@ -41,6 +41,7 @@ public sealed class SimplePartArray : IPartArray
     /// <exception cref="ArgumentException">A centre or radius is NaN or infinite, or a radius is not positive.</exception>
     public void SetSpheres(ReadOnlySpan<Sphere> spheres)
     {
+        Owner?.Touch();
         for (int i = 0; i < spheres.Length; i++)
         {
             Sphere s = spheres[i];

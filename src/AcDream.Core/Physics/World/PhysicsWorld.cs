@@ -199,6 +199,7 @@ public sealed partial class PhysicsWorld
             _byId.Remove(obj.Id);
         }
 
+        obj.RemoveShadowsFromCells();
         obj.ClearHooksOnRemove();
         if (_player == obj)
         {

@@ -12,7 +12,7 @@ namespace AcDream.Core.Benchmarks;
 /// (docs/accuracy-vs-cost.md). Each invoke runs <see cref="Ticks"/> world ticks; the mean is per world tick.
 /// </summary>
 [MemoryDiagnoser]
-public class SceneBenchmarks
+public class FidelitySceneBenchmarks
 {
     private const int Ticks = 10;
     private const double Dt = 0.034;

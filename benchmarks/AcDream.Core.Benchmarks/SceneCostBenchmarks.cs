@@ -1,0 +1,235 @@
+using System.Numerics;
+using AcDream.Core.Physics;
+using BenchmarkDotNet.Attributes;
+
+namespace AcDream.Core.Benchmarks;
+
+/// <summary>
+/// A scene pays only for what moves: one world tick with 100 active movers among 0, 10,000 or 100,000 resting or static
+/// objects (half resting items, half static scenery, spread over a 3 x 3 block area around the player). The resting objects
+/// are dormant and never visited, so the tick time should not depend on their number. Mean per world tick.
+/// </summary>
+[MemoryDiagnoser]
+public class SceneRestingObjectsBenchmarks
+{
+    private const int Ticks = 10;
+    private PhysicsWorld _world = null!;
+    private double _now;
+    private int _tick;
+    private PhysicsObj[] _movers = null!;
+
+    /// <summary>Number of resting or static objects besides the 100 movers.</summary>
+    [Params(0, 10_000, 100_000)]
+    public int Resting { get; set; }
+
+    /// <summary>Builds the scene and ticks it until the resting objects are dormant.</summary>
+    [GlobalSetup]
+    public void Setup()
+    {
+        _world = new PhysicsWorld(0.0) { Transition = new FlatGroundSeam() };
+        _movers = new PhysicsObj[100];
+        for (int i = 0; i < _movers.Length; i++)
+        {
+            _movers[i] = SceneBench.Mover(_world, (uint)(1 + i), SceneBench.At(40f + (i % 10) * 10f, 40f + (i / 10) * 10f));
+        }
+
+        _world.Player = _movers[0];
+        for (int i = 0; i < Resting; i++)
+        {
+            // A 3 x 3 block area (576 m square) centred on block 0xA9B4; ids after the movers.
+            float x = -192f + (i % 400) * 1.44f;
+            float y = -192f + (i / 400 % 400) * 1.44f;
+            PhysicsObj o = SceneBench.Item(_world, (uint)(1000 + i), SceneBench.At(x, y));
+            if ((i & 1) == 1)
+            {
+                o.SetState(o.State | PhysicsState.Static);
+            }
+        }
+
+        _now = 0.0;
+        for (int i = 0; i < 20; i++)
+        {
+            Step();
+        }
+    }
+
+    /// <summary>One world tick.</summary>
+    [Benchmark(OperationsPerInvoke = Ticks)]
+    public int Tick()
+    {
+        for (int i = 0; i < Ticks; i++)
+        {
+            Step();
+        }
+
+        return _world.LastTickVisitCount;
+    }
+
+    private void Step()
+    {
+        // Movers walk in a square: every 30 ticks they turn 90 degrees, so they stay in the area forever.
+        if (_tick % 30 == 0)
+        {
+            int leg = _tick / 30 % 4;
+            var v = leg switch { 0 => new Vector3(2f, 0f, 0f), 1 => new Vector3(0f, 2f, 0f), 2 => new Vector3(-2f, 0f, 0f), _ => new Vector3(0f, -2f, 0f) };
+            for (int m = 0; m < _movers.Length; m++)
+            {
+                _movers[m].SetVelocity(v);
+            }
+        }
+
+        _tick++;
+        _now += 0.034;
+        _world.Tick(_now);
+    }
+}
+
+/// <summary>
+/// What each effect costs: 1,000 remote creatures (root motion, interpolation from server updates every 6 ticks, gravity and
+/// friction on flat ground, a fade hook re-armed every 60 ticks) ticked under effect sets from "interpolation only" to
+/// "everything". Mean per world tick.
+/// </summary>
+[MemoryDiagnoser]
+public class SceneEffectsBenchmarks
+{
+    private const int Ticks = 6;
+    private PhysicsWorld _world = null!;
+    private PhysicsObj[] _creatures = null!;
+    private Position[] _targets = null!;
+    private double _now;
+    private int _tick;
+
+    /// <summary>The declared effect set.</summary>
+    [Params("InterpolationOnly", "Interpolation+Physics", "Interpolation+Physics+Hooks", "Interpolation+Physics+Hooks+RootMotion", "All")]
+    public string EffectSet { get; set; } = "All";
+
+    /// <summary>Builds 1,000 creatures and a player.</summary>
+    [GlobalSetup]
+    public void Setup()
+    {
+        SceneEffects fx = EffectSet switch
+        {
+            "InterpolationOnly" => SceneEffects.Interpolation,
+            "Interpolation+Physics" => SceneEffects.Interpolation | SceneEffects.Gravity | SceneEffects.Friction,
+            "Interpolation+Physics+Hooks" => SceneEffects.Interpolation | SceneEffects.Gravity | SceneEffects.Friction | SceneEffects.Hooks,
+            "Interpolation+Physics+Hooks+RootMotion" => SceneEffects.All & ~(SceneEffects.Collision | SceneEffects.ParticlesAndScripts),
+            _ => SceneEffects.All,
+        };
+        _world = new PhysicsWorld(0.0, hookPoolCapacity: 1100) { Effects = fx, Transition = new FlatGroundSeam() };
+        PhysicsObj player = SceneBench.Item(_world, 1, SceneBench.At(96f, 96f));
+        _world.Player = player;
+        _creatures = new PhysicsObj[1000];
+        _targets = new Position[1000];
+        for (int i = 0; i < _creatures.Length; i++)
+        {
+            Position p = SceneBench.At(20f + (i % 40) * 4f, 20f + (i / 40) * 6f);
+            PhysicsObj c = SceneBench.Item(_world, (uint)(100 + i), p);
+            ((SimplePartArray)c.PartArray!).SequenceVelocity = new Vector3(0f, 1f, 0f);
+            c.GetMinterp();
+            _creatures[i] = c;
+            _targets[i] = p;
+        }
+
+        for (int i = 0; i < 60; i++)
+        {
+            Step();
+        }
+    }
+
+    /// <summary>One world tick.</summary>
+    [Benchmark(OperationsPerInvoke = Ticks)]
+    public int Tick()
+    {
+        for (int i = 0; i < Ticks; i++)
+        {
+            Step();
+        }
+
+        return _world.LastTickVisitCount;
+    }
+
+    private void Step()
+    {
+        if (_tick % 6 == 0)
+        {
+            float dy = (_tick / 6 % 20) * 0.3f;
+            for (int i = 0; i < _creatures.Length; i++)
+            {
+                Position t = _targets[i];
+                t.Frame.Origin += new Vector3(0f, dy, 0f);
+                _creatures[i].InterpolateTo(t, keepHeading: false);
+            }
+        }
+
+        if (_tick % 60 == 0)
+        {
+            for (int i = 0; i < _creatures.Length; i++)
+            {
+                _creatures[i].SetTranslucency((_tick / 60 & 1) == 0 ? 0.5f : 0f, 1.0);
+            }
+        }
+
+        _tick++;
+        _now += 0.034;
+        _world.Tick(_now);
+    }
+}
+
+/// <summary>Scene builders for the scene benchmarks.</summary>
+internal static class SceneBench
+{
+    public static Position At(float x, float y)
+    {
+        var p = new Position(0xA9B40001u, new Vector3(x, y, 0f));
+        p.TryAdjustToOutside();
+        return p;
+    }
+
+    /// <summary>A resting item: one sphere, gravity on, placed on the flat ground.</summary>
+    public static PhysicsObj Item(PhysicsWorld w, uint id, Position p)
+    {
+        PhysicsObj o = w.CreateObject(id);
+        o.PartArray = new SimplePartArray(numParts: 1, numSpheres: 1);
+        o.EnterWorld(p);
+        return o;
+    }
+
+    /// <summary>A mover: an item that will be given velocities.</summary>
+    public static PhysicsObj Mover(PhysicsWorld w, uint id, Position p) => Item(w, id, p);
+}
+
+/// <summary>A flat walkable floor at z = 0 under the whole world (a fixture standing in for terrain in these benchmarks).</summary>
+internal sealed class FlatGroundSeam : TransitionSeam
+{
+    /// <inheritdoc />
+    public override bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
+    {
+        result = Ground(newPos);
+        return true;
+    }
+
+    /// <inheritdoc />
+    public override SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags)
+    {
+        obj.CommitTransition(Ground(pos));
+        return SetPositionError.Ok;
+    }
+
+    private static TransitionResult Ground(in Position p)
+    {
+        Position q = p;
+        if (q.Frame.Origin.Z < 0f)
+        {
+            q.Frame.Origin = new Vector3(q.Frame.Origin.X, q.Frame.Origin.Y, 0f);
+        }
+
+        q.TryAdjustToOutside();
+        TransitionResult r = TransitionResult.FreeSpace(q);
+        r.CurrentCellId = q.ObjCellId;
+        r.ContactPlaneValid = true;
+        r.ContactPlaneNormal = new Vector3(0f, 0f, 1f);
+        r.ContactPlaneD = 0f;
+        r.ContactPlaneCellId = q.ObjCellId;
+        return r;
+    }
+}

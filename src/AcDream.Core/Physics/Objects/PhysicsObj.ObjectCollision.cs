@@ -1,0 +1,191 @@
+using System;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>The object as an obstacle: how a transition of another object collides with it.</summary>
+public sealed partial class PhysicsObj
+{
+    /// <summary>The game object's answers (creature, player, PK...), or null for a plain physics object. Retail:
+    /// <c>weenie_obj</c>.</summary>
+    public IWeenieObject? Weenie { get; set; }
+
+    /// <summary>
+    /// Tests this object, as an obstacle, against <paramref name="transition"/> (another object's sweep), with retail's
+    /// rules: an ethereal object that ignores collisions is skipped; a viewer passes creatures; an ethereal obstacle (or
+    /// an ethereal mover against a non-static one) only blocks placements and is recorded without stopping the mover;
+    /// players pass through each other unless impenetrable or both PK / both PK-lite; missiles skip missiles and, aimed at
+    /// a target, ethereal objects and other creatures; a mover with IGNORE_CREATURES passes creatures (and missiles).
+    /// The geometry tested is the part BSPs (HAS_PHYSICS_BSP), else the cylinder spheres, else the spheres. A hit is
+    /// recorded in the transition's collision info (a static obstacle counts as the environment instead).
+    /// </summary>
+    /// <returns>The state of the first shape that did not answer OK, or OK.</returns>
+    // retail: CPhysicsObj::FindObjCollisions (acclient.c:316158)
+    public TransitionState FindObjCollisions(Transition transition)
+    {
+        ArgumentNullException.ThrowIfNull(transition);
+        ObjectInfo oi = transition.ObjectInfo;
+        SpherePath path = transition.SpherePath;
+        if ((_state & PhysicsState.Ethereal) != 0 && (_state & PhysicsState.IgnoreCollisions) != 0)
+        {
+            return TransitionState.Ok;
+        }
+
+        IWeenieObject? weenie = Weenie;
+        if (weenie is not null && (oi.State & ObjectInfoState.IsViewer) != 0 && weenie.IsCreature)
+        {
+            return TransitionState.Ok;
+        }
+
+        bool ethereal;
+        if ((_state & PhysicsState.Ethereal) != 0 || (oi.Ethereal && (_state & PhysicsState.Static) == 0))
+        {
+            ethereal = true;
+            if (path.StepDown)
+            {
+                return TransitionState.Ok;
+            }
+        }
+        else
+        {
+            ethereal = false;
+        }
+
+        path.ObstructionEthereal = ethereal;
+        bool playersPass = PlayersPassThrough(weenie, oi.State);
+        bool isCreature = (_state & PhysicsState.Missile) != 0 || (weenie is not null && weenie.IsCreature);
+        TransitionState result = TransitionState.Ok;
+        bool hit = false;
+        if ((_state & PhysicsState.HasPhysicsBsp) == 0 || playersPass || oi.MissileIgnore(this))
+        {
+            IPartCollision? parts = PartArray as IPartCollision;
+            int numCyl = parts is null ? 0 : parts.CylSpheres.Length;
+            if (numCyl != 0 && !playersPass && !oi.MissileIgnore(this))
+            {
+                ReadOnlySpan<CylSphere> cyl = parts!.CylSpheres;
+                for (int i = 0; i < cyl.Length; i++)
+                {
+                    result = cyl[i].IntersectsSphere(_position, Scale, transition);
+                    if (result != TransitionState.Ok)
+                    {
+                        hit = true;
+                        break;
+                    }
+                }
+            }
+            else if (numCyl == 0 && PartArray is not null && PartArray.NumSpheres != 0 && !playersPass && !oi.MissileIgnore(this))
+            {
+                ReadOnlySpan<Sphere> spheres = PartArray.Spheres;
+                for (int i = 0; i < spheres.Length; i++)
+                {
+                    result = spheres[i].IntersectsSphere(_position, Scale, transition, isCreature);
+                    if (result != TransitionState.Ok)
+                    {
+                        hit = true;
+                        break;
+                    }
+                }
+            }
+        }
+        else if (PartArray is IPartCollision bspParts)
+        {
+            result = FindPartObjCollisions(bspParts, transition);
+            hit = result != TransitionState.Ok;
+        }
+
+        if (hit && !path.StepDown)
+        {
+            CollisionInfo ci = transition.CollisionInfo;
+            if ((_state & PhysicsState.Static) != 0)
+            {
+                if ((oi.State & ObjectInfoState.Contact) == 0)
+                {
+                    ci.CollidedWithEnvironment = true;
+                }
+            }
+            else if (ethereal || (isCreature && (oi.State & ObjectInfoState.IgnoreCreatures) != 0))
+            {
+                result = TransitionState.Ok;
+                ci.CollisionNormalValid = false;
+                ci.AddObject(this, TransitionState.Ok);
+            }
+            else
+            {
+                ci.AddObject(this, result);
+            }
+        }
+
+        path.ObstructionEthereal = false;
+        return result;
+    }
+
+    // retail: CPartArray::FindObjCollisions (acclient.c:325463)
+    private static TransitionState FindPartObjCollisions(IPartCollision parts, Transition transition)
+    {
+        TransitionState result = TransitionState.Ok;
+        int n = parts.NumCollisionParts;
+        for (int i = 0; i < n; i++)
+        {
+            result = parts.FindPartObjCollisions(i, transition);
+            if (result != TransitionState.Ok)
+            {
+                break;
+            }
+        }
+
+        return result;
+    }
+
+    // retail: CPhysicsObj::FindObjCollisions (acclient.c:316158), the player rule: two players pass through each other
+    // unless the mover is impenetrable, this one is, or both are PK, or both PK-lite.
+    private static bool PlayersPassThrough(IWeenieObject? weenie, ObjectInfoState mover)
+    {
+        if (weenie is null || !weenie.IsPlayer || (mover & ObjectInfoState.IsPlayer) == 0)
+        {
+            return false;
+        }
+
+        if ((mover & ObjectInfoState.IsImpenetrable) != 0 || weenie.IsImpenetrable)
+        {
+            return false;
+        }
+
+        if ((mover & ObjectInfoState.IsPK) != 0 && weenie.IsPK)
+        {
+            return false;
+        }
+
+        return !((mover & ObjectInfoState.IsPKLite) != 0 && weenie.IsPKLite);
+    }
+
+    /// <summary>
+    /// True when <paramref name="mover"/>, standing where it is, overlaps this object (a placement test with the mover's
+    /// spheres). A static object never reports; false when no transition is free or the world has no retail sweep.
+    /// </summary>
+    // retail: CPhysicsObj::check_collision (acclient.c:320127)
+    public bool CheckCollision(PhysicsObj mover)
+    {
+        ArgumentNullException.ThrowIfNull(mover);
+        if ((_state & PhysicsState.Static) != 0 || World.Transition is not RetailTransition retail)
+        {
+            return false;
+        }
+
+        return retail.CheckCollision(this, mover);
+    }
+
+    /// <summary>True when this object, where it stands, overlaps an object shadowed in any cell it overlaps.</summary>
+    // retail: CPhysicsObj::ethereal_check_for_collisions (acclient.c:317831)
+    public bool EtherealCheckForCollisions()
+    {
+        for (int i = 0; i < NumShadowObjects; i++)
+        {
+            ObjCell? cell = _shadowObjects[i].Cell;
+            if (cell is not null && cell.CheckCollisions(this))
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+}
