@@ -73,7 +73,7 @@ internal static class AccuracyReport
     private static void Substeps(ReportContext ctx)
     {
         const string sw = "substep profile";
-        TerrainWorld? holtburg = ctx.TerrainDir is { } dir ? TerrainKit.Holtburg(dir) : null;
+        (LandHeightTable Table, List<LandBlockData> Blocks)? holtburg = ctx.TerrainDir is { } dir ? TerrainKit.ReadHoltburg(dir) : null;
         foreach (Pacing pacing in Pacing.All)
         {
             foreach (PhysicsProfile p in new[] { Retail, Ace })
@@ -91,7 +91,7 @@ internal static class AccuracyReport
                 if (holtburg is not null)
                 {
                     MeasureAgainstFine(ctx, sw, HoltburgWalkScene.Name, choice, retail, ctx.Seconds(20.0, 0.5),
-                        (prof, pc, s) => new HoltburgWalkScene(holtburg, prof, pc, s), p, pacing);
+                        (prof, pc, s) => new HoltburgWalkScene(holtburg.Value, prof, pc, s), p, pacing);
                 }
             }
         }

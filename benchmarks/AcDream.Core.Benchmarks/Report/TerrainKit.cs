@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using System.Numerics;
 using AcDream.Core.Physics;
@@ -44,16 +45,32 @@ internal static class TerrainKit
     /// <summary>Outdoor cell id of cell (cx, cy) of the hand-made block.</summary>
     public static uint CellId(int cx, int cy) => ((uint)Block << 24) | ((uint)Block << 16) | (uint)(cx * 8 + cy + 1);
 
-    /// <summary>The real Holtburg landblocks 0xA8B3-0xAAB5 from <paramref name="dir"/>.</summary>
-    public static TerrainWorld Holtburg(string dir)
+    /// <summary>The real Holtburg landblocks 0xA8B3-0xAAB5 read from <paramref name="dir"/> (parsed once; build worlds with
+    /// <see cref="HoltburgWorld"/>).</summary>
+    public static (LandHeightTable Table, List<LandBlockData> Blocks) ReadHoltburg(string dir)
     {
-        var world = new TerrainWorld(TerrainDataFiles.ReadHeightTableCsv(Path.Combine(dir, "land_height_table.csv")));
+        var blocks = new List<LandBlockData>();
         foreach (LandBlockData d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
         {
             if (d.BlockId >> 24 is >= 0xA8 and <= 0xAA && ((d.BlockId >> 16) & 0xFF) is >= 0xB3 and <= 0xB5)
             {
-                world.AddLandBlock(d.BlockId, d.Height, d.Terrain);
+                blocks.Add(d);
             }
+        }
+
+        return (TerrainDataFiles.ReadHeightTableCsv(Path.Combine(dir, "land_height_table.csv")), blocks);
+    }
+
+    /// <summary>
+    /// A fresh terrain world of the Holtburg blocks. Each scene run needs its own: land cells hold the shadows of the objects
+    /// in them, so a terrain world shared by two physics worlds would let one world's objects collide with the other's.
+    /// </summary>
+    public static TerrainWorld HoltburgWorld((LandHeightTable Table, List<LandBlockData> Blocks) data)
+    {
+        var world = new TerrainWorld(data.Table);
+        foreach (LandBlockData d in data.Blocks)
+        {
+            world.AddLandBlock(d.BlockId, d.Height, d.Terrain);
         }
 
         return world;
