@@ -14,7 +14,7 @@ namespace AcDream.Core.Benchmarks.Report;
 internal sealed class SvgChart
 {
     private static readonly string[] Palette = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"];
-    private readonly List<(string Name, List<(double X, double Y)> Points, bool Lines, bool Markers)> _series = [];
+    private readonly List<(string Name, List<(double X, double Y)> Points, bool Lines, bool Markers, List<string>? Labels)> _series = [];
 
     public SvgChart(string title, string xLabel, string yLabel)
     {
@@ -37,19 +37,27 @@ internal sealed class SvgChart
 
     public int Height { get; init; } = 420;
 
-    /// <summary>Adds a series; points with non-finite coordinates (or non-positive ones on a log axis) are skipped.</summary>
-    public SvgChart Add(string name, IEnumerable<(double X, double Y)> points, bool lines = true, bool markers = false)
+    public int LegendWidth { get; init; } = 190;
+
+    /// <summary>Adds a series; points with non-finite coordinates (or non-positive ones on a log axis) are skipped. Optional
+    /// <paramref name="labels"/> (one per point) are written beside the markers.</summary>
+    public SvgChart Add(string name, IEnumerable<(double X, double Y)> points, bool lines = true, bool markers = false, IReadOnlyList<string>? labels = null)
     {
         var list = new List<(double, double)>();
+        List<string>? kept = labels is null ? null : [];
+        int i = 0;
         foreach (var p in points)
         {
             if (double.IsFinite(p.X) && double.IsFinite(p.Y) && (!LogX || p.X > 0) && (!LogY || p.Y > 0))
             {
                 list.Add(p);
+                kept?.Add(labels![i]);
             }
+
+            i++;
         }
 
-        _series.Add((name, list, lines, markers));
+        _series.Add((name, list, lines, markers, kept));
         return this;
     }
 
@@ -61,7 +69,8 @@ internal sealed class SvgChart
 
     public string Render()
     {
-        const int left = 80, right = 190, top = 40, bottom = 60;
+        const int left = 80, top = 40, bottom = 60;
+        int right = LegendWidth;
         int pw = Width - left - right, ph = Height - top - bottom;
         double x0 = double.MaxValue, x1 = double.MinValue, y0 = double.MaxValue, y1 = double.MinValue;
         foreach (var s in _series)
@@ -96,6 +105,9 @@ internal sealed class SvgChart
             y1 += 0.5;
         }
 
+        double padX = (x1 - x0) * 0.04;
+        x0 -= padX;
+        x1 += padX;
         double padY = (y1 - y0) * 0.05;
         y0 -= padY;
         y1 += padY;
@@ -105,13 +117,17 @@ internal sealed class SvgChart
         sb.Append(Inv($"<rect width=\"{Width}\" height=\"{Height}\" fill=\"white\"/>\n"));
         sb.Append(Inv($"<text x=\"{Width / 2}\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">{Esc(Title)}</text>\n"));
         sb.Append(Inv($"<rect x=\"{left}\" y=\"{top}\" width=\"{pw}\" height=\"{ph}\" fill=\"none\" stroke=\"#333\"/>\n"));
-        for (int i = 0; i <= 5; i++)
+        foreach (double fx in Ticks(x0, x1, LogX))
         {
-            double fx = x0 + (x1 - x0) * i / 5.0, fy = y0 + (y1 - y0) * i / 5.0;
-            double px = left + pw * i / 5.0, py = top + ph - ph * i / 5.0;
+            double px = left + (fx - x0) / (x1 - x0) * pw;
             sb.Append(Inv($"<line x1=\"{px:F1}\" y1=\"{top}\" x2=\"{px:F1}\" y2=\"{top + ph}\" stroke=\"#eee\"/>\n"));
-            sb.Append(Inv($"<line x1=\"{left}\" y1=\"{py:F1}\" x2=\"{left + pw}\" y2=\"{py:F1}\" stroke=\"#eee\"/>\n"));
             sb.Append(Inv($"<text x=\"{px:F1}\" y=\"{top + ph + 16}\" text-anchor=\"middle\">{Fmt(LogX ? Math.Pow(10, fx) : fx)}</text>\n"));
+        }
+
+        foreach (double fy in Ticks(y0, y1, LogY))
+        {
+            double py = top + ph - (fy - y0) / (y1 - y0) * ph;
+            sb.Append(Inv($"<line x1=\"{left}\" y1=\"{py:F1}\" x2=\"{left + pw}\" y2=\"{py:F1}\" stroke=\"#eee\"/>\n"));
             sb.Append(Inv($"<text x=\"{left - 6}\" y=\"{py + 4:F1}\" text-anchor=\"end\">{Fmt(LogY ? Math.Pow(10, fy) : fy)}</text>\n"));
         }
 
@@ -135,9 +151,14 @@ internal sealed class SvgChart
 
             if (s.Markers)
             {
-                foreach (var (x, y) in s.Points)
+                for (int pi = 0; pi < s.Points.Count; pi++)
                 {
+                    var (x, y) = s.Points[pi];
                     sb.Append(Inv($"<circle cx=\"{Px(x):F1}\" cy=\"{Py(y):F1}\" r=\"4\" fill=\"{colour}\"/>\n"));
+                    if (s.Labels is not null)
+                    {
+                        sb.Append(Inv($"<text x=\"{Px(x) + 6:F1}\" y=\"{Py(y) - 5:F1}\" font-size=\"10\" fill=\"{colour}\">{Esc(s.Labels[pi])}</text>\n"));
+                    }
                 }
             }
 
@@ -151,6 +172,38 @@ internal sealed class SvgChart
 
         double Px(double x) => left + (TX(x) - x0) / (x1 - x0) * pw;
         double Py(double y) => top + ph - (TY(y) - y0) / (y1 - y0) * ph;
+    }
+
+    // Tick positions in axis units: whole decades on a log axis (every other one when more than 8), else 1/2/5 steps.
+    private static List<double> Ticks(double lo, double hi, bool log)
+    {
+        var list = new List<double>();
+        if (log)
+        {
+            double first = Math.Ceiling(lo), last = Math.Floor(hi);
+            int step = last - first > 8 ? 2 : 1;
+            for (double d = first; d <= last + 1e-9; d += step)
+            {
+                list.Add(d);
+            }
+
+            if (list.Count >= 2)
+            {
+                return list;
+            }
+
+            list.Clear();
+        }
+
+        double raw = (hi - lo) / 5.0;
+        double mag = Math.Pow(10, Math.Floor(Math.Log10(raw)));
+        double unit = raw / mag < 1.5 ? mag : raw / mag < 3.5 ? 2 * mag : raw / mag < 7.5 ? 5 * mag : 10 * mag;
+        for (double v = Math.Ceiling(lo / unit) * unit; v <= hi + unit * 1e-9; v += unit)
+        {
+            list.Add(v);
+        }
+
+        return list;
     }
 
     private double TX(double x) => LogX ? Math.Log10(x) : x;

@@ -158,9 +158,13 @@ internal static class RoomScene
     /// <summary>The corridor's cell id.</summary>
     public static readonly uint Corridor = BspScene.IndoorCell(1);
 
-    /// <summary>Builds the scene into <paramref name="cells"/>.</summary>
-    public static void Build(WorldCells cells)
+    /// <summary>The building's frame for a heading (degrees clockwise from north; 0 = local axes are the landblock's).</summary>
+    public static Frame FrameFor(float heading) => Frame.FromHeading(Origin, heading);
+
+    /// <summary>Builds the scene into <paramref name="cells"/>, turned to <paramref name="heading"/>.</summary>
+    public static void Build(WorldCells cells, float heading = 0f)
     {
+        Frame frame = FrameFor(heading);
         // Shell (outdoor collision), local to the origin.
         var shell = new List<Polygon>();
         BspScene.AddBox(shell, new(-0.2f, -0.2f, 0f), new(2f, 0f, 3f));     // south wall, west of the door
@@ -173,7 +177,7 @@ internal static class RoomScene
         BspScene.AddBox(shell, new(1.8f, 6.2f, 0f), new(2f, 12.2f, 3f));    // corridor, west wall
         BspScene.AddBox(shell, new(4f, 6.2f, 0f), new(4.2f, 12.2f, 3f));    // corridor, east wall
         BspScene.AddBox(shell, new(1.8f, 12f, 0f), new(4.2f, 12.2f, 3f));   // corridor, end wall
-        BspScene.AddBuilding(cells, Origin, shell, new BldPortal(Room, 0));
+        BspScene.AddBuilding(cells, frame, 1f, shell, new BldPortal(Room, 0));
 
         // Room: floor over the room and the door's threshold, inward wall faces, the door and corridor portals.
         var room = new List<Polygon>();
@@ -188,7 +192,7 @@ internal static class RoomScene
         Polygon roomToCorridor = BspScene.Quad(new(2f, 6f, 0f), new(4f, 6f, 0f), new(4f, 6f, 3f), new(2f, 6f, 3f), 101);
         var roomStruct = new CellStruct(BspBuilder.Build(room.ToArray()),
             BspBuilder.BuildCell(BspBuilder.BoxCellPlanes(new(0f, -0.2f, -0.5f), new(6f, 6f, 3f))), new[] { door, roomToCorridor });
-        cells.AddEnvCell(new EnvCell(Room, new Frame(Origin, Quaternion.Identity), roomStruct, new[]
+        cells.AddEnvCell(new EnvCell(Room, frame, roomStruct, new[]
         {
             new CellPortal(CellPortal.OutsideCellId, door, 0),
             new CellPortal(Corridor, roomToCorridor, 1, 0),
@@ -203,7 +207,7 @@ internal static class RoomScene
         Polygon corridorToRoom = BspScene.Quad(new(2f, 6f, 0f), new(4f, 6f, 0f), new(4f, 6f, 3f), new(2f, 6f, 3f), 200);
         var corrStruct = new CellStruct(BspBuilder.Build(corr.ToArray()),
             BspBuilder.BuildCell(BspBuilder.BoxCellPlanes(new(2f, 6f, -0.5f), new(4f, 12f, 3f))), new[] { corridorToRoom });
-        cells.AddEnvCell(new EnvCell(Corridor, new Frame(Origin, Quaternion.Identity), corrStruct, new[]
+        cells.AddEnvCell(new EnvCell(Corridor, frame, corrStruct, new[]
         {
             new CellPortal(Room, corridorToRoom, 0, 1),
         }));

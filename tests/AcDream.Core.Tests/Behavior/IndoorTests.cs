@@ -99,4 +99,28 @@ public class IndoorTests
         PhysicsObj obj2 = SweepScene.Walker(world, q, R, id: 2);
         Assert.Equal(RoomScene.Corridor, obj2.Position.ObjCellId);
     }
+
+    [Theory]
+    [InlineData(90f)]
+    [InlineData(217f)]
+    public void TurnedBuilding_DoorwayAndCorridorWorkInTheCellsLocalSpace(float heading)
+    {
+        WorldCells cells = BspScene.FlatWorld();
+        RoomScene.Build(cells, heading);
+        PhysicsWorld world = BspScene.Physics(cells);
+        Frame frame = RoomScene.FrameFor(heading);
+        // Local (3, -5), facing the building's local north (heading + 0): 70 ticks * 0.1 m reach local (3, 2) in the room,
+        // 130 ticks local (3, 8) in the corridor.
+        Vector3 start = frame.LocalToGlobal(new Vector3(3f, -5f, 0f));
+        PhysicsObj obj = SweepScene.Walker(world, new Position(BspScene.OutdoorCell(start.X, start.Y), Frame.FromHeading(start, heading)), R);
+        SweepScene.SetWalk(obj, new Vector3(0f, 2f, 0f));
+        SweepScene.Run(world, 70);
+        Assert.Equal(RoomScene.Room, obj.Position.ObjCellId);
+        Vector3 local = frame.GlobalToLocal(obj.Position.Frame.Origin);
+        Assert.Equal(3f, local.X, 2);
+        Assert.Equal(2f, local.Y, 2);
+        SweepScene.Run(world, 60);
+        Assert.Equal(RoomScene.Corridor, obj.Position.ObjCellId);
+        Assert.Equal(BspScene.Ground, obj.Position.Frame.Origin.Z, 3);
+    }
 }

@@ -8,6 +8,7 @@ namespace AcDream.Core.Tests.Behavior;
 /// Skipping dormant objects stays bit-identical with the retail sweep and object collisions in play: walkers on sloped
 /// terrain run into resting items, items dropped from a height land and fall asleep, a player walks among them.
 /// </summary>
+[Trait("Category", "Determinism")]
 public class SceneSweepEquivalenceTests
 {
     private static PhysicsWorld Build(bool visitEveryObject, out PhysicsObj[] walkers)

@@ -247,3 +247,21 @@ public class SceneTests
         public override SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags) => _inner.SetPosition(obj, pos, flags);
     }
 }
+
+/// <summary>Two worlds never share the cells that hold their objects' shadows.</summary>
+public class SceneIsolationTests
+{
+    [Fact]
+    public void OneTerrainWorld_CannotServeTwoPhysicsWorlds()
+    {
+        TerrainWorld terrain = SweepScene.Terrain();
+        SweepScene.AddBlock(terrain, 0x20, 0x20, (x, y) => 0);
+        var a = new PhysicsWorld(0.0) { Transition = new RetailTransition(terrain) };
+        var b = new PhysicsWorld(0.0);
+        TransitionSeam before = b.Transition;
+        Assert.Throws<System.ArgumentException>(() => b.Transition = new RetailTransition(terrain));
+        Assert.Same(before, b.Transition);
+        // The same world may take a new sweep over its own terrain.
+        a.Transition = new RetailTransition(terrain);
+    }
+}

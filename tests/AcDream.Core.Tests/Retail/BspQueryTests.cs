@@ -206,4 +206,60 @@ public class BspQueryTests
         Assert.Equal(0f, path.CheckPos.Frame.Origin.Z, 5);
         Assert.Equal(new Vector3(0f, 0f, 1f), t.CollisionInfo.CollisionNormal);
     }
+
+    // A retail-shaped solid tree: the split plane z = 0 (the square's plane), the square listed in both leaves, the
+    // negative (below-floor) leaf solid, as a physics BSP of a slab would be.
+    private static BspTree SolidFloor()
+    {
+        Polygon sq = Square();
+        var bound = new Sphere(new Vector3(0.5f, 0.5f, 0f), 0.71f);
+        var nodes = new[]
+        {
+            BspNode.Split(BspNodeType.BPIN, sq.Plane, new Sphere(new Vector3(0.5f, 0.5f, 0f), 50f), 1, 2),
+            BspNode.MakeLeaf(0, bound, 0, 1, false),
+            BspNode.MakeLeaf(1, new Sphere(new Vector3(0.5f, 0.5f, 0f), 50f), 1, 1, true),
+        };
+        return new BspTree(nodes, new[] { sq }, new[] { 0, 0 });
+    }
+
+    [Fact]
+    public void SolidLeaf_CatchesACentreInsideOnlyWithTheCentreCheck()
+    {
+        BspTree tree = SolidFloor();
+        // 2 m below the floor, r 0.5: touches no polygon; the centre is in the solid leaf.
+        var s = new Sphere(new Vector3(0.5f, 0.5f, -2f), 0.5f);
+        Assert.True(tree.SphereIntersectsSolid(s, true));
+        Assert.False(tree.SphereIntersectsSolid(s, false));
+        bool centerSolid = false;
+        Polygon? hit = null;
+        Assert.True(tree.SphereIntersectsSolidPoly(s, 0.5f, ref centerSolid, ref hit, true));
+        Assert.True(centerSolid);
+        Assert.Null(hit);
+        // BSPLEAF::point_intersects_solid (acclient.c:364085) answers num_polys != 0, not the solid flag: both leaves list
+        // the square, so a point above the floor "intersects solid" too (retail quirk, kept).
+        Assert.True(tree.PointIntersectsSolid(new Vector3(0.5f, 0.5f, -2f)));
+        Assert.True(tree.PointIntersectsSolid(new Vector3(0.5f, 0.5f, 2f)));
+    }
+
+    [Fact]
+    public void PlacementInsert_PushesACentreInTheSolidOutThroughTheFace_AndGivesUpWhenBuriedTooDeep()
+    {
+        BspTree tree = SolidFloor();
+        var t = new Transition(new TerrainWorld(new LandHeightTable(new float[LandHeightTable.Count])));
+        SpherePath path = t.SpherePath;
+        path.InitSphere(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) }, 1f);
+        path.LocalSpacePos = new Position(0x80800001u, Vector3.Zero);
+        path.CheckPos = new Position(0x80800001u, new Vector3(0.5f, 0.5f, -0.8f));
+        path.CacheGlobalSphere();
+        // Centre 0.3 below the face: round 0 finds the square with the centre solid: move = (r, negated for the solid
+        // centre, negated again for dist <= 0) - dist = 0.5 + 0.3 = 0.8 up; round 1 is free: Adjusted, offset 0.8.
+        path.LocalSpaceSphere[0] = new Sphere(new Vector3(0.5f, 0.5f, -0.3f), 0.5f);
+        Assert.Equal(TransitionState.Adjusted, tree.PlacementInsert(t));
+        Assert.Equal(0f, path.CheckPos.Frame.Origin.Z, 5);
+
+        // Centre 2 m down: solid but no polygon within reach of the 0.5 m sphere; the test radius doubles each round and
+        // 20 rounds pass without a polygon to push out of: Collided.
+        path.LocalSpaceSphere[0] = new Sphere(new Vector3(0.5f, 0.5f, -2f), 0.5f);
+        Assert.Equal(TransitionState.Collided, tree.PlacementInsert(t));
+    }
 }

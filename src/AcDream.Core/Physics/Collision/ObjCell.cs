@@ -6,8 +6,8 @@ namespace AcDream.Core.Physics;
 /// <summary>
 /// A cell of the world as the sweep sees it: something that can be asked for collisions with a transition, can list
 /// the further cells a sphere reaches through it, and can tell whether a point lies in it. Retail: <c>CObjCell</c>
-/// (acclient.h:30915, PORTAL/ccell/CObjCell.c) and its virtual table; <see cref="LandCell"/> (outdoor terrain) is the
-/// only kind today — env cells, buildings and object shadows arrive with issue 6.
+/// (acclient.h:30915, PORTAL/ccell/CObjCell.c) and its virtual table. Kinds: <see cref="LandCell"/> (outdoor terrain, with
+/// its building) and <see cref="EnvCell"/> (indoor cells); object shadows arrive with the object half of issue 6.
 /// </summary>
 public abstract partial class ObjCell
 {

@@ -31,6 +31,37 @@ public sealed partial class RetailTransition : TransitionSeam
     /// <summary>Where cells are found.</summary>
     public ICellSource Cells { get; }
 
+    /// <inheritdoc />
+    /// <remarks>Land and indoor cells hold the shadows of the objects in them (<c>CObjCell::shadow_object_list</c>), so a
+    /// <see cref="TerrainWorld"/> (or <see cref="WorldCells"/>) serves exactly one <see cref="PhysicsWorld"/>: sharing it would let
+    /// one world's objects collide with the other's. Give each world its own terrain world (the landblock data can be shared).</remarks>
+    internal override void AttachTo(PhysicsWorld world)
+    {
+        PhysicsWorld? owner = Cells switch
+        {
+            TerrainWorld t => t.OwnerWorld,
+            WorldCells c => c.OwnerWorld ?? c.Terrain.OwnerWorld,
+            _ => null,
+        };
+        if (owner is not null && owner != world)
+        {
+            throw new ArgumentException(
+                "These cells already hold another PhysicsWorld's objects (their shadows); give each world its own TerrainWorld.",
+                nameof(world));
+        }
+
+        switch (Cells)
+        {
+            case TerrainWorld t:
+                t.OwnerWorld = world;
+                break;
+            case WorldCells c:
+                c.OwnerWorld = world;
+                c.Terrain.OwnerWorld = world;
+                break;
+        }
+    }
+
     /// <summary>The ten transitions (retail's static pool, per world here).</summary>
     public TransitionPool Pool { get; }
 

@@ -46,7 +46,8 @@ public sealed partial class Transition
             return;
         }
 
-        double s = dist / (1.0 * radius);
+        // Retail divides by 1.0 * radius; PhysicsProfile.SweepStepScale (1 by default) scales that step length (fidelity switch).
+        double s = dist / (StepScale() * radius);
         if (s > 1.0)
         {
             double n = Math.Ceiling(s);
@@ -65,6 +66,9 @@ public sealed partial class Transition
             numSteps = 0;
         }
     }
+
+    // The world's PhysicsProfile.SweepStepScale (retail 1.0); 1.0 when the sweep has no object.
+    private double StepScale() => ObjectInfo.Object is { } o ? o.World.Profile.SweepStepScale : 1.0;
 
     /// <summary>
     /// Adjusts one step's movement to the surfaces the object touches: against a sliding normal the movement is kept only

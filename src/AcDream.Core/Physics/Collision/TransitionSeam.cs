@@ -1,3 +1,4 @@
+using System;
 namespace AcDream.Core.Physics;
 
 /// <summary>
@@ -7,6 +8,15 @@ namespace AcDream.Core.Physics;
 /// <remarks>Every member is called inside the tick and must not allocate.</remarks>
 public abstract class TransitionSeam
 {
+    /// <summary>
+    /// Called when a world takes this seam as its <see cref="PhysicsWorld.Transition"/>. A seam that keeps per-world state
+    /// (cells holding the shadows of one world's objects) refuses a second world here.
+    /// </summary>
+    /// <exception cref="ArgumentException">The seam, or the cells it sweeps, already serve another world.</exception>
+    internal virtual void AttachTo(PhysicsWorld world)
+    {
+    }
+
     /// <summary>
     /// Sweeps <paramref name="obj"/> from <paramref name="oldPos"/> to <paramref name="newPos"/>. On success fills
     /// <paramref name="result"/> and returns true; on failure (blocked, or no transition available) returns false and

@@ -67,7 +67,7 @@ public sealed partial class PhysicsObj
             return true;
         }
 
-        InterpolateTo(p, IsMovingTo());
+        FollowRemoteReport(p); // retail profile: InterpolateTo(p, IsMovingTo())
         return true;
     }
 

@@ -15,6 +15,12 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::UpdatePhysicsInternal (acclient.c:317700)
     internal void UpdatePhysicsInternal(float quantum, ref Frame frame)
     {
+        if (World.Profile.Arithmetic == ArithmeticMode.Float32)
+        {
+            UpdatePhysicsInternalFloat32(quantum, ref frame); // fidelity switch, not retail
+            return;
+        }
+
         double q = quantum;
         Vector3 v = _velocity;
         float mag2 = (float)((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
@@ -73,7 +79,7 @@ public sealed partial class PhysicsObj
             (float)(q * acc.Y + vel.Y),
             (float)(q * acc.Z + vel.Z));
         Vector3 w = _omega;
-        frame.GRotate(new Vector3((float)(q * w.X), (float)(q * w.Y), (float)(q * w.Z)));
+        RotateForProfile(ref frame, new Vector3((float)(q * w.X), (float)(q * w.Y), (float)(q * w.Z))); // retail: frame.GRotate(...)
     }
 
     /// <summary>

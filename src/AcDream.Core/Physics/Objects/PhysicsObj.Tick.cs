@@ -246,7 +246,8 @@ public sealed partial class PhysicsObj
             PositionManager?.AdjustOffset(ref offset, quantum);
         }
 
-        newFrame.Combine(_position.Frame, offset);
+        ApplyExtrapolation(ref offset, quantum); // fidelity switch; nothing under the retail profile
+        CombineForProfile(ref newFrame, offset); // retail profile: newFrame.Combine(_position.Frame, offset)
         if ((_state & PhysicsState.Hidden) == 0)
         {
             UpdatePhysicsInternal(quantum, ref newFrame);

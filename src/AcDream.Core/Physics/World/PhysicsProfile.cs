@@ -1,10 +1,12 @@
 namespace AcDream.Core.Physics;
 
 /// <summary>
-/// How a world slices time for <c>update_object</c>. Two named profiles exist: <see cref="Retail"/> (the default, the
-/// retail client) and <see cref="AceCompatible"/> (the ACE server emulator's deliberate changes). Immutable.
+/// How a world slices time for <c>update_object</c>, and the fidelity switches the accuracy-versus-cost report measures.
+/// Two named profiles exist: <see cref="Retail"/> (the default, the retail client) and <see cref="AceCompatible"/> (the ACE
+/// server emulator's deliberate changes). Immutable; <see cref="With"/> derives a profile with other fidelity switches
+/// (their defaults are retail's; see <c>PhysicsProfile.Fidelity.cs</c>).
 /// </summary>
-public sealed class PhysicsProfile
+public sealed partial class PhysicsProfile
 {
     /// <summary>
     /// The retail client: <c>update_object</c> ignores a dt at or below EPSILON, runs one step when dt &lt;= MaxQuantum
@@ -51,4 +53,13 @@ public sealed class PhysicsProfile
 
     /// <inheritdoc />
     public override string ToString() => Name;
+
+    private PhysicsProfile(PhysicsProfile basis, string name)
+        : this(name, basis.AccumulateBelowMinQuantum, basis.MaxQuantum, basis.MinQuantum, basis.HugeQuantum)
+    {
+        Arithmetic = basis.Arithmetic;
+        RenormaliseEvery = basis.RenormaliseEvery;
+        SweepStepScale = basis.SweepStepScale;
+        RemoteSmoothing = basis.RemoteSmoothing;
+    }
 }

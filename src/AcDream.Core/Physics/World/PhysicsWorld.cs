@@ -74,7 +74,20 @@ public sealed partial class PhysicsWorld
     private bool _objectMaintenanceActive = true;
 
     /// <summary>The collision sweep. <see cref="FreeSpaceTransition.Instance"/> by default.</summary>
-    public TransitionSeam Transition { get; set; } = FreeSpaceTransition.Instance;
+    /// <exception cref="ArgumentNullException">The value is null.</exception>
+    /// <exception cref="ArgumentException">The seam's cells already serve another world (see <see cref="RetailTransition"/>).</exception>
+    public TransitionSeam Transition
+    {
+        get => _transition;
+        set
+        {
+            ArgumentNullException.ThrowIfNull(value);
+            value.AttachTo(this);
+            _transition = value;
+        }
+    }
+
+    private TransitionSeam _transition = FreeSpaceTransition.Instance;
 
     /// <summary>Optional step observer (tests, diagnostics); null costs nothing.</summary>
     public IStepObserver? StepObserver { get; set; }

@@ -11,6 +11,9 @@ namespace AcDream.Core.Physics;
 /// <remarks>Lookups allocate nothing. Cells are added and removed between ticks; not thread-safe for writes.</remarks>
 public sealed class WorldCells : ICellSource
 {
+    /// <summary>The world whose objects' shadows these cells hold (set when a world takes a sweep over them).</summary>
+    internal PhysicsWorld? OwnerWorld { get; set; }
+
     private readonly Dictionary<uint, EnvCell> _envCells = new();
 
     /// <summary>Creates the cell set over <paramref name="terrain"/>.</summary>
