@@ -27,6 +27,7 @@ public class NonFiniteInputsAreRefusedTests
         s.Creature.InterpolateTo(ManagerScene.At(new Vector3(50f, 53f, 0f)), false);
         s.Creature.ConstrainTo(s.Creature.Position, 10f, 50f);
         s.Creature.SetTranslucency(0.5f, 1.0);
+        s.Creature.PositionManager!.StickTo(1u, 0.5f, 1.8f);
         s.CreatureParts.SequenceVelocity = new Vector3(0f, 1f, 0f);
         s.World.Tick(s.World.CurrentTime + 0.05);
         return s;
@@ -73,6 +74,7 @@ public class NonFiniteInputsAreRefusedTests
         h.Add(im.OriginalDistance);
         ConstraintManager? cm = o.PositionManager!.ConstraintManager;
         h.Add(cm is null ? 0u : cm.IsConstrained ? 2u : 1u);
+        h.Add(o.GetStickyObjectId());
         h.Add(o.GetUpdateTime(PhysicsTimeStamp.Position));
         h.Add(o.GetUpdateTime(PhysicsTimeStamp.Teleport));
         return h.Value;
@@ -109,6 +111,7 @@ public class NonFiniteInputsAreRefusedTests
             // interpolation updates
             "InterpolateToOrigin", "InterpolateToQuaternion", "EnqueueOrigin", "EnqueueBody", "EnqueueNodeVelocity",
             "EnqueueNodeExtent", "HandleReceivedPositionOrigin", "HandleReceivedPositionQuaternion", "AdjustOffsetQuantum",
+            "HandleUpdateTargetOrigin",
         ];
         foreach (string n in names)
         {
@@ -179,6 +182,9 @@ public class NonFiniteInputsAreRefusedTests
             case "EnqueueNodeExtent": s.Interpolation!.EnqueueNode(InterpolationNodeType.Jump, p, Vector3.Zero, x); break;
             case "HandleReceivedPositionOrigin": o.HandleReceivedPosition(WithOrigin(p, v), 9, 0, true); break;
             case "HandleReceivedPositionQuaternion": o.HandleReceivedPosition(WithQuaternion(p, x), 9, 0, true); break;
+            case "HandleUpdateTargetOrigin":
+                o.HandleUpdateTarget(new TargetInfo { ContextId = 0, ObjectId = 1u, Status = TargetStatus.Ok, TargetPosition = WithOrigin(s.Player.Position, v) });
+                break;
             case "AdjustOffsetQuantum":
                 Frame f = Frame.Identity;
                 s.Interpolation!.AdjustOffset(ref f, x);
