@@ -311,7 +311,8 @@ public partial struct Frame : IEquatable<Frame>
                && System.Math.Abs(_qz - rhs._qz) < eps;
     }
 
-    /// <summary>Bitwise equality of origin, quaternion and cache (for determinism checks; use <see cref="IsEqual"/> for retail's tolerance).</summary>
+    /// <summary>Exact component-wise equality of origin, quaternion and cache (float equality: -0 equals +0 and NaN equals NaN;
+    /// compare bit patterns for determinism checks; use <see cref="IsEqual"/> for retail's tolerance).</summary>
     public readonly bool Equals(Frame other) =>
         Origin.Equals(other.Origin)
         && _qw.Equals(other._qw) && _qx.Equals(other._qx) && _qy.Equals(other._qy) && _qz.Equals(other._qz)
@@ -325,10 +326,10 @@ public partial struct Frame : IEquatable<Frame>
     /// <inheritdoc />
     public override readonly int GetHashCode() => HashCode.Combine(Origin, _qw, _qx, _qy, _qz);
 
-    /// <summary>Bitwise equality; see <see cref="Equals(Frame)"/>.</summary>
+    /// <summary>Exact equality; see <see cref="Equals(Frame)"/>.</summary>
     public static bool operator ==(Frame left, Frame right) => left.Equals(right);
 
-    /// <summary>Bitwise inequality; see <see cref="Equals(Frame)"/>.</summary>
+    /// <summary>Exact inequality; see <see cref="Equals(Frame)"/>.</summary>
     public static bool operator !=(Frame left, Frame right) => !left.Equals(right);
 
     /// <inheritdoc />

@@ -213,10 +213,10 @@ public struct Position : IEquatable<Position>
     /// <inheritdoc />
     public override readonly int GetHashCode() => HashCode.Combine(ObjCellId, Frame);
 
-    /// <summary>Bitwise equality of cell id and frame.</summary>
+    /// <summary>Exact equality of cell id and frame (see <see cref="Frame.Equals(Frame)"/>).</summary>
     public static bool operator ==(Position left, Position right) => left.Equals(right);
 
-    /// <summary>Bitwise inequality of cell id and frame.</summary>
+    /// <summary>Exact inequality of cell id and frame.</summary>
     public static bool operator !=(Position left, Position right) => !left.Equals(right);
 
     /// <inheritdoc />
