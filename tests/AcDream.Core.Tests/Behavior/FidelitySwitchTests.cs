@@ -193,9 +193,7 @@ public class FidelitySwitchTests
         }
 
         Run(20); // warm-up (JIT, position managers created on the first report)
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        Run(40);
-        Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+        AllocationProbe.AssertSteadyStateAllocatesNothing(() => Run(40));
     }
 
     private static PhysicsObj Spinner(PhysicsProfile profile)

@@ -28,13 +28,12 @@ public class SweepAllocationTests
         }
 
         SweepScene.Run(world, 600);
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        for (int i = 0; i < 300; i++)
+        AllocationProbe.AssertSteadyStateAllocatesNothing(() =>
         {
-            world.Tick(world.CurrentTime + SweepScene.Dt);
-        }
-
-        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-        Assert.Equal(0, allocated);
+            for (int i = 0; i < 300; i++)
+            {
+                world.Tick(world.CurrentTime + SweepScene.Dt);
+            }
+        });
     }
 }

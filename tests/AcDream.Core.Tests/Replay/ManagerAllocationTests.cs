@@ -43,10 +43,7 @@ public class ManagerAllocationTests
         }
 
         Run(300);
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        Run(1000);
-        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-        Assert.Equal(0L, allocated);
+        AllocationProbe.AssertSteadyStateAllocatesNothing(() => Run(1000));
     }
 
     [Fact]

@@ -49,13 +49,13 @@ public class TerrainQueryStabilityTests
         }
 
         Run();
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        for (int i = 0; i < 1000; i++)
+        AllocationProbe.AssertSteadyStateAllocatesNothing(() =>
         {
-            Run();
-        }
-
-        Assert.Equal(0L, GC.GetAllocatedBytesForCurrentThread() - before);
+            for (int i = 0; i < 1000; i++)
+            {
+                Run();
+            }
+        });
     }
 
     [Fact]

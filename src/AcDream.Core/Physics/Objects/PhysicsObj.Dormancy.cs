@@ -29,7 +29,7 @@ public sealed partial class PhysicsObj
     internal bool _inActiveList;
     internal bool _pendingWake;
     internal int _queueStamp;
-    internal bool _inGateQueue;
+    internal GateQueue? _gateQueue;
     private double _updateTime;
     private Vector3 _playerVector;
     internal float _playerDistance;
@@ -200,7 +200,7 @@ public sealed partial class PhysicsObj
     /// True when a visit to this (non-far, non-bailed) object changes nothing but the bookkeeping: no motion, no components that
     /// act on their own, and a frame that <c>combine</c> with the identity offset reproduces bit for bit.
     /// </summary>
-    private bool IsIdleForScene()
+    internal bool IsIdleForScene()
     {
         if (MovementManager is not null || DetectionManager is not null || TargetManager is not null
             || Hooks is not null || _animHookCount != 0 || (Children is not null && Children.Count != 0)

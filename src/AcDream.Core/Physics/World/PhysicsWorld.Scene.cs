@@ -35,10 +35,11 @@ public sealed partial class PhysicsWorld
     private PhysicsObj? _current;
     private double _odometer;
     private double _odometerBefore;
-    private readonly PriorityQueue<(PhysicsObj Obj, int Stamp), double> _gateQueue = new(64);
-    private int _gateCapacity = 64;
-    private (PhysicsObj Obj, int Stamp)[] _gateScratch = new (PhysicsObj, int)[16];
-    private int _gateLive;
+    // Objects ordered before the player see its position before its update; those after, after it: one queue each, so each
+    // is re-measured once per tick against the position it sees.
+    private readonly GateQueue _gateBefore = new();
+    private readonly GateQueue _gateAfter = new();
+    private PhysicsObj[] _gateDue = new PhysicsObj[16];
 
     /// <summary>
     /// The effects this scene simulates; <see cref="SceneEffects.All"/> (retail) by default. Declare fewer to pay for fewer.
@@ -50,6 +51,12 @@ public sealed partial class PhysicsWorld
     /// False by default: dormant objects are skipped, with identical simulated results.
     /// </summary>
     public bool VisitEveryObject { get; init; }
+
+    /// <summary>
+    /// How dormant objects follow the player's 96 m gate. <see cref="GateTracking.Exact"/> (the default) keeps their bookkeeping
+    /// exactly retail's; <see cref="GateTracking.MovingObjectsOnly"/> re-measures only dormant objects that would move once near.
+    /// </summary>
+    public GateTracking GateTracking { get; init; } = GateTracking.Exact;
 
     /// <summary>Number of objects visited by the last tick (awake objects).</summary>
     public int LastTickVisitCount { get; private set; }
@@ -179,71 +186,11 @@ public sealed partial class PhysicsWorld
 
     private void GateEnqueue(PhysicsObj o, double key)
     {
-        if (!o._inGateQueue)
-        {
-            o._inGateQueue = true;
-            _gateLive++;
-        }
-
-        if (_gateQueue.Count >= _gateCapacity)
-        {
-            // Stale entries (objects woken since they were queued) are dropped before the queue may grow, so repeated
-            // sleep/wake cycles never allocate; it grows only when live entries fill it.
-            CompactGateQueue();
-            if (_gateQueue.Count >= _gateCapacity / 2)
-            {
-                _gateCapacity = _gateQueue.EnsureCapacity(_gateCapacity * 2);
-            }
-        }
-
-        _gateQueue.Enqueue((o, o._queueStamp), key);
+        bool before = _player is not null && o.WorldIndex < _player.WorldIndex;
+        (before ? _gateBefore : _gateAfter).Enqueue(o, key);
     }
 
-    private void GateForget(PhysicsObj o)
-    {
-        o._queueStamp++;
-        if (o._inGateQueue)
-        {
-            o._inGateQueue = false;
-            _gateLive--;
-        }
-    }
-
-    /// <summary>Drops stale entries (objects woken since they were queued) so that sleep/wake cycles never grow the queue.</summary>
-    private void CompactGateQueue()
-    {
-        int n = 0;
-        while (_gateQueue.TryDequeue(out (PhysicsObj Obj, int Stamp) e, out double key))
-        {
-            if (e.Obj._queueStamp != e.Stamp || !e.Obj._inGateQueue)
-            {
-                continue;
-            }
-
-            if (n == _gateScratch.Length)
-            {
-                Array.Resize(ref _gateScratch, n * 2);
-                Array.Resize(ref _gateKeys, n * 2);
-            }
-
-            if (_gateKeys.Length < _gateScratch.Length)
-            {
-                Array.Resize(ref _gateKeys, _gateScratch.Length);
-            }
-
-            _gateScratch[n] = e;
-            _gateKeys[n] = key;
-            n++;
-        }
-
-        for (int i = 0; i < n; i++)
-        {
-            _gateQueue.Enqueue(_gateScratch[i], _gateKeys[i]);
-            _gateScratch[i] = default;
-        }
-    }
-
-    private double[] _gateKeys = new double[16];
+    private static void GateForget(PhysicsObj o) => GateQueue.Forget(o);
 
     private void RemoveFromVisiting(PhysicsObj obj)
     {
@@ -387,7 +334,7 @@ public sealed partial class PhysicsWorld
         if (player is not null)
         {
             // Objects ordered before the player see its position before its update.
-            PopGateCandidates(_odometerBefore, beforePlayer: true);
+            PopGateCandidates(_gateBefore, _odometerBefore, _playerBeforeNow);
         }
 
         int visits = 0;
@@ -402,7 +349,7 @@ public sealed partial class PhysicsWorld
                 PlayerListener?.PlayerPhysicsUpdated(obj);
                 _playerAfterNow = player._position;
                 _odometer += Travel(_playerBeforeNow, _playerAfterNow);
-                PopGateCandidates(_odometer, beforePlayer: false);
+                PopGateCandidates(_gateAfter, _odometer, _playerAfterNow);
                 checkedAfterPlayer = true;
             }
         }
@@ -410,7 +357,7 @@ public sealed partial class PhysicsWorld
         if (!checkedAfterPlayer && player is not null)
         {
             // The player is dormant-proof, so it is always in the list; this covers a player with no cell (bails) too.
-            PopGateCandidates(_odometer, beforePlayer: false);
+            PopGateCandidates(_gateAfter, _odometer, _playerAfterNow);
         }
 
         _inTick = false;
@@ -426,43 +373,14 @@ public sealed partial class PhysicsWorld
     }
 
     /// <summary>Re-measures the dormant gated objects whose margin the player's travel may have used up; those that crossed the
-    /// 96 m gate are woken (and visited later in this same tick, in order).</summary>
-    private void PopGateCandidates(double odometer, bool beforePlayer)
+    /// 96 m gate (or came too close to call) are woken and visited later in this same tick, in order.</summary>
+    private void PopGateCandidates(GateQueue queue, double odometer, in Position seen)
     {
-        int n = 0;
-        int playerIndex = _player is null ? -1 : _player.WorldIndex;
-        while (_gateQueue.TryPeek(out (PhysicsObj Obj, int Stamp) e, out double key) && key <= odometer)
-        {
-            _gateQueue.Dequeue();
-            if (e.Obj._queueStamp != e.Stamp || e.Obj._dormancy == Dormancy.Awake || e.Obj.WorldIndex < 0)
-            {
-                continue; // stale entry
-            }
-
-            GateForget(e.Obj); // re-queued below unless it wakes
-
-            if (n == _gateScratch.Length)
-            {
-                Array.Resize(ref _gateScratch, n * 2);
-            }
-
-            _gateScratch[n++] = e;
-        }
-
+        int n = queue.PopDue(odometer, ref _gateDue);
         for (int i = 0; i < n; i++)
         {
-            PhysicsObj o = _gateScratch[i].Obj;
-            _gateScratch[i] = default;
-            bool objBeforePlayer = o.WorldIndex < playerIndex;
-            if (beforePlayer != objBeforePlayer && beforePlayer)
-            {
-                // Ordered after the player: decided once the player has moved this tick.
-                GateEnqueue(o, odometer);
-                continue;
-            }
-
-            Position seen = objBeforePlayer ? _playerBeforeNow : _playerAfterNow;
-            double seenOdo = objBeforePlayer ? _odometerBefore : _odometer;
+            PhysicsObj o = _gateDue[i];
+            _gateDue[i] = null!;
             Vector3 pv = seen.GetOffset(o._position);
             double d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
             float df = (float)d;
@@ -471,13 +389,12 @@ public sealed partial class PhysicsWorld
             float margin = MathF.Abs(df - PhysicsGlobals.PlayerActivityDistance);
             if (wasFar != isFar || !(margin > GateSafetyMargin(df)))
             {
-                // It crossed (or is too close to call): wake it; it is visited later in this tick, in order.
                 WakeDormant(o);
                 continue;
             }
 
             o._playerDistanceAtSleep = df;
-            GateEnqueue(o, seenOdo + margin - GateSafetyMargin(df));
+            queue.Enqueue(o, odometer + margin - GateSafetyMargin(df));
         }
     }
 
@@ -501,7 +418,8 @@ public sealed partial class PhysicsWorld
             o._sleepPhaseActive = (o._transientState & TransientState.Active) != 0;
             GateForget(o);
             o._playerDistanceAtSleep = o._playerDistance;
-            if (!float.IsNaN(margin) && d != Dormancy.Bailed)
+            if (!float.IsNaN(margin) && d != Dormancy.Bailed
+                && (GateTracking == GateTracking.Exact || !o.IsIdleForScene()))
             {
                 double seenOdo = _player is not null && o.WorldIndex < _player.WorldIndex ? _odometerBefore : _odometer;
                 GateEnqueue(o, seenOdo + margin - GateSafetyMargin(o._playerDistance));
