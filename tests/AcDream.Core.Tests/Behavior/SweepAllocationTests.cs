@@ -28,6 +28,7 @@ public class SweepAllocationTests
         }
 
         SweepScene.Run(world, 600);
+        Vector3 start = walkers[0].Position.Frame.Origin;
         AllocationProbe.AssertSteadyStateAllocatesNothing(() =>
         {
             for (int i = 0; i < 300; i++)
@@ -35,5 +36,9 @@ public class SweepAllocationTests
                 world.Tick(world.CurrentTime + SweepScene.Dt);
             }
         });
+
+        // The measured ticks really swept: the walker is somewhere else on its 8 m circle, still in contact with the ground.
+        Assert.NotEqual(start, walkers[0].Position.Frame.Origin);
+        Assert.True((walkers[0].TransientState & TransientState.Contact) != 0);
     }
 }

@@ -16,14 +16,8 @@ public partial struct Frame
     /// </summary>
     public void CombineNoRenormalise(in Frame f1, in Frame f2)
     {
-        double ox = (double)f1._m6 * f2.Origin.Z + (double)f1._m0 * f2.Origin.X + (double)f1._m3 * f2.Origin.Y + f1.Origin.X;
-        double oy = (double)f1._m7 * f2.Origin.Z + (double)f1._m1 * f2.Origin.X + (double)f1._m4 * f2.Origin.Y + f1.Origin.Y;
-        double oz = (double)f1._m8 * f2.Origin.Z + (double)f1._m2 * f2.Origin.X + (double)f1._m5 * f2.Origin.Y + f1.Origin.Z;
-        float nz = (float)((double)f2._qy * f1._qx + (double)f2._qz * f1._qw - (double)f1._qy * f2._qx + (double)f1._qz * f2._qw);
-        float ny = (float)((double)f2._qy * f1._qw - (double)f2._qz * f1._qx + (double)f1._qz * f2._qx + (double)f1._qy * f2._qw);
-        float nx = (float)((double)f1._qw * f2._qx + (double)f2._qz * f1._qy + (double)f2._qw * f1._qx - (double)f2._qy * f1._qz);
-        float nw = (float)((double)f1._qw * f2._qw - (double)f2._qx * f1._qx - (double)f2._qy * f1._qy - (double)f2._qz * f1._qz);
-        Origin = new Vector3((float)ox, (float)oy, (float)oz);
+        CombineProduct(f1, f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz);
+        Origin = origin;
         StoreUnnormalised(nw, nx, ny, nz);
     }
 
@@ -33,25 +27,10 @@ public partial struct Frame
     /// </summary>
     public void GRotateNoRenormalise(Vector3 w)
     {
-        double mag2 = (double)w.X * w.X + (double)w.Y * w.Y + (double)w.Z * w.Z;
-        if (mag2 < (double)PhysicsGlobals.Epsilon * PhysicsGlobals.Epsilon)
+        if (GRotateProduct(w, out float nw, out float nx, out float ny, out float nz))
         {
-            return;
+            StoreUnnormalised(nw, nx, ny, nz);
         }
-
-        double theta = System.Math.Sqrt(mag2);
-        float thetaInv = (float)(1.0 / theta);
-        double half = theta * 0.5;
-        double s = System.Math.Sin(half);
-        float c = (float)System.Math.Cos(half);
-        float f = (float)(s * w.X * thetaInv);
-        float g = (float)(thetaInv * s * w.Y);
-        double h = s * thetaInv * w.Z;
-        float nz = (float)((double)f * _qy + (double)c * _qz - (double)g * _qx + h * _qw);
-        float ny = (float)((double)c * _qy - (double)f * _qz + h * _qx + (double)g * _qw);
-        float nx = (float)((double)c * _qx + (double)g * _qz + (double)f * _qw - h * _qy);
-        float nw = (float)((double)c * _qw - (double)f * _qx - (double)g * _qy - h * _qz);
-        StoreUnnormalised(nw, nx, ny, nz);
     }
 
     /// <summary>Squared norm of the quaternion, in double (1 for every frame retail produces; drifts only without renormalising).</summary>

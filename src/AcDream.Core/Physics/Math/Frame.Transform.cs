@@ -73,10 +73,21 @@ public partial struct Frame
     // retail: Frame::grotate (acclient.c:357421)
     public void GRotate(Vector3 w)
     {
+        if (GRotateProduct(w, out float nw, out float nx, out float ny, out float nz))
+        {
+            SetRotate(nw, nx, ny, nz);
+        }
+    }
+
+    /// <summary>grotate's arithmetic: the axis-angle quaternion of <paramref name="w"/> times this quaternion (not normalised);
+    /// false when |w|² is below EPSILON² and nothing is to be done.</summary>
+    private readonly bool GRotateProduct(Vector3 w, out float nw, out float nx, out float ny, out float nz)
+    {
         double mag2 = (double)w.X * w.X + (double)w.Y * w.Y + (double)w.Z * w.Z;
         if (mag2 < (double)PhysicsGlobals.Epsilon * PhysicsGlobals.Epsilon)
         {
-            return;
+            nw = nx = ny = nz = 0f;
+            return false;
         }
 
         double theta = System.Math.Sqrt(mag2);
@@ -87,11 +98,11 @@ public partial struct Frame
         float f = (float)(s * w.X * thetaInv);
         float g = (float)(thetaInv * s * w.Y);
         double h = s * thetaInv * w.Z;
-        float nz = (float)((double)f * _qy + (double)c * _qz - (double)g * _qx + h * _qw);
-        float ny = (float)((double)c * _qy - (double)f * _qz + h * _qx + (double)g * _qw);
-        float nx = (float)((double)c * _qx + (double)g * _qz + (double)f * _qw - h * _qy);
-        float nw = (float)((double)c * _qw - (double)f * _qx - (double)g * _qy - h * _qz);
-        SetRotate(nw, nx, ny, nz);
+        nz = (float)((double)f * _qy + (double)c * _qz - (double)g * _qx + h * _qw);
+        ny = (float)((double)c * _qy - (double)f * _qz + h * _qx + (double)g * _qw);
+        nx = (float)((double)c * _qx + (double)g * _qz + (double)f * _qw - h * _qy);
+        nw = (float)((double)c * _qw - (double)f * _qx - (double)g * _qy - h * _qz);
+        return true;
     }
 
     /// <summary>Linear interpolation of the origin between two frames: (1 - t) * from + t * to.</summary>

@@ -235,15 +235,22 @@ public partial struct Frame : IEquatable<Frame>
     // retail: Frame::combine (acclient.c:319448)
     public void Combine(in Frame f1, in Frame f2)
     {
+        CombineProduct(f1, f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz);
+        Origin = origin;
+        SetRotate(nw, nx, ny, nz);
+    }
+
+    /// <summary>combine's arithmetic: f2's origin lifted by f1, and the quaternion product f1.q * f2.q (not normalised).</summary>
+    private static void CombineProduct(in Frame f1, in Frame f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz)
+    {
         double ox = (double)f1._m6 * f2.Origin.Z + (double)f1._m0 * f2.Origin.X + (double)f1._m3 * f2.Origin.Y + f1.Origin.X;
         double oy = (double)f1._m7 * f2.Origin.Z + (double)f1._m1 * f2.Origin.X + (double)f1._m4 * f2.Origin.Y + f1.Origin.Y;
         double oz = (double)f1._m8 * f2.Origin.Z + (double)f1._m2 * f2.Origin.X + (double)f1._m5 * f2.Origin.Y + f1.Origin.Z;
-        float nz = (float)((double)f2._qy * f1._qx + (double)f2._qz * f1._qw - (double)f1._qy * f2._qx + (double)f1._qz * f2._qw);
-        float ny = (float)((double)f2._qy * f1._qw - (double)f2._qz * f1._qx + (double)f1._qz * f2._qx + (double)f1._qy * f2._qw);
-        float nx = (float)((double)f1._qw * f2._qx + (double)f2._qz * f1._qy + (double)f2._qw * f1._qx - (double)f2._qy * f1._qz);
-        float nw = (float)((double)f1._qw * f2._qw - (double)f2._qx * f1._qx - (double)f2._qy * f1._qy - (double)f2._qz * f1._qz);
-        Origin = new Vector3((float)ox, (float)oy, (float)oz);
-        SetRotate(nw, nx, ny, nz);
+        nz = (float)((double)f2._qy * f1._qx + (double)f2._qz * f1._qw - (double)f1._qy * f2._qx + (double)f1._qz * f2._qw);
+        ny = (float)((double)f2._qy * f1._qw - (double)f2._qz * f1._qx + (double)f1._qz * f2._qx + (double)f1._qy * f2._qw);
+        nx = (float)((double)f1._qw * f2._qx + (double)f2._qz * f1._qy + (double)f2._qw * f1._qx - (double)f2._qy * f1._qz);
+        nw = (float)((double)f1._qw * f2._qw - (double)f2._qx * f1._qx - (double)f2._qy * f1._qy - (double)f2._qz * f1._qz);
+        origin = new Vector3((float)ox, (float)oy, (float)oz);
     }
 
     /// <summary>Returns <paramref name="f1"/> ∘ <paramref name="f2"/>; see <see cref="Combine(in Frame, in Frame)"/>.</summary>
