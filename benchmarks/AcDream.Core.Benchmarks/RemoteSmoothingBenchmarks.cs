@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcDream.Core.Benchmarks.Report;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Replay.Harness;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;
@@ -34,7 +35,7 @@ public class RemoteSmoothingBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        _world = new PhysicsWorld(0.0, PhysicsProfile.Retail.With(remoteSmoothing: Smoothing)) { Transition = new FlatFloorSeam() };
+        _world = new PhysicsWorld(0.0, PhysicsProfile.Retail.With(remoteSmoothing: Smoothing)) { Transition = new FlatGroundTransition() };
         PhysicsObj player = _world.CreateObject(1);
         player.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f };
         player.EnterWorld(new Position(0x80800001u, new Vector3(96f, 96f, 0f)));

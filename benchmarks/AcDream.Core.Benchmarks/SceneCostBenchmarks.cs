@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Replay.Harness;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;
@@ -31,7 +32,7 @@ public class SceneRestingObjectsBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        _world = new PhysicsWorld(0.0) { Transition = new FlatGroundSeam(), GateTracking = Gate };
+        _world = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition(), GateTracking = Gate };
         _movers = new PhysicsObj[100];
         for (int i = 0; i < _movers.Length; i++)
         {
@@ -124,7 +125,7 @@ public class SceneEffectsBenchmarks
             "5 +RootMotion" => three | SceneEffects.Hooks | SceneEffects.RootMotion,
             _ => SceneEffects.All,
         };
-        _world = new PhysicsWorld(0.0, hookPoolCapacity: 1100) { Effects = fx, Transition = new FlatGroundSeam() };
+        _world = new PhysicsWorld(0.0, hookPoolCapacity: 1100) { Effects = fx, Transition = new FlatGroundTransition() };
         // Every creature within 96 m of the player (a far creature keeps its fades unprocessed, as retail does).
         PhysicsObj player = SceneBench.Item(_world, 1, SceneBench.At(70f, 64f));
         _world.Player = player;
@@ -211,41 +212,5 @@ internal static class SceneBench
         o.GetMinterp();
         ((SimplePartArray)o.PartArray!).SequenceVelocity = new Vector3(0f, 2f, 0f);
         return o;
-    }
-}
-
-/// <summary>A flat walkable floor at z = 0 under the whole world (a fixture standing in for terrain in these benchmarks).</summary>
-internal sealed class FlatGroundSeam : TransitionSeam
-{
-    /// <inheritdoc />
-    public override bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
-    {
-        result = Ground(newPos);
-        return true;
-    }
-
-    /// <inheritdoc />
-    public override SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags)
-    {
-        obj.CommitTransition(Ground(pos));
-        return SetPositionError.Ok;
-    }
-
-    private static TransitionResult Ground(in Position p)
-    {
-        Position q = p;
-        if (q.Frame.Origin.Z < 0f)
-        {
-            q.Frame.Origin = new Vector3(q.Frame.Origin.X, q.Frame.Origin.Y, 0f);
-        }
-
-        q.TryAdjustToOutside();
-        TransitionResult r = TransitionResult.FreeSpace(q);
-        r.CurrentCellId = q.ObjCellId;
-        r.ContactPlaneValid = true;
-        r.ContactPlaneNormal = new Vector3(0f, 0f, 1f);
-        r.ContactPlaneD = 0f;
-        r.ContactPlaneCellId = q.ObjCellId;
-        return r;
     }
 }

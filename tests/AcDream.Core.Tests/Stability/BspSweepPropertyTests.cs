@@ -25,7 +25,7 @@ public class BspSweepPropertyTests
         from dt in Gen.Elements(34, 50, 100, 200)      // ms per tick
         select new Case(seed, speed, turn, heading, dt);
 
-    private static Config Cfg => Config.QuickThrowOnFailure.WithMaxTest(40).WithReplay(20261122UL, 0x14057B7EF767814FUL);
+    private static Config Cfg => PropertyAssert.Replayable(40, 20261122UL, 0x14057B7EF767814FUL);
 
     [Fact]
     public void RandomWalkers_AmongRandomBoxes_NeverEndInsideOne()
@@ -34,7 +34,7 @@ public class BspSweepPropertyTests
         // sphere-polygon tests work to EPSILON = 0.2 mm, positions near 100 m round by 7.6e-6 m). Boxes taller than the
         // walker's step-up reach (0.6 m) can only be touched; lower ones may be climbed onto, where the sphere rests on the
         // top (distance exactly r).
-        Check.One(Cfg, Prop.ForAll(Cases.ToArbitrary(), c =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Cases.ToArbitrary(), c =>
         {
             const float r = 0.5f;
             var rng = new Random(c.Seed);

@@ -31,12 +31,12 @@ public class DtSequencePropertyTests
         from dts in Gen.ArrayOf(Dts, 40)
         select (origin, dts);
 
-    private static Config Cfg => Config.QuickThrowOnFailure.WithMaxTest(200).WithReplay(20261122UL, 0x9E3779B97F4A7C15UL);
+    private static Config Cfg => PropertyAssert.Replayable(200, 20261122UL, 0x9E3779B97F4A7C15UL);
 
     [Fact]
     public void EveryCall_ObeysTheSlicingRules_AndNothingBecomesNaN()
     {
-        Check.One(Cfg, Prop.ForAll(Sequences.ToArbitrary(), seq =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Sequences.ToArbitrary(), seq =>
         {
             PhysicsWorld world = TickTestContext.World(seq.Origin);
             PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(12f, 12f, 100f));
@@ -125,7 +125,7 @@ public class DtSequencePropertyTests
         // The same on real terrain through the retail sweep: a slope rising 20 m per 24 m (N.z = 0.768 >= floor_z) and a
         // walker (movement manager: never deactivates) standing on it. In contact on walkable ground gravity is zeroed, so
         // no step of any length moves it.
-        Check.One(Cfg, Prop.ForAll(Sequences.ToArbitrary(), seq =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Sequences.ToArbitrary(), seq =>
         {
             TerrainWorld terrain = Behavior.SweepScene.Terrain();
             Behavior.SweepScene.AddBlock(terrain, Behavior.SweepScene.BlockX, Behavior.SweepScene.BlockY, (vx, _) => 10 + 20 * vx);
@@ -156,7 +156,7 @@ public class DtSequencePropertyTests
         // is combined with the identity offset and the unchanged origin skips the sweep: every bit of the position stays.
         // Through the world gate (CPhysics::UseTime) and directly through update_object, with an object that stays awake
         // (movement manager) and one that self-deactivates (none).
-        Check.One(Cfg, Prop.ForAll(Sequences.ToArbitrary(), seq =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Sequences.ToArbitrary(), seq =>
         {
             foreach (bool awake in new[] { true, false })
             {

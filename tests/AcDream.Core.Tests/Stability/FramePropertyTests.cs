@@ -29,20 +29,20 @@ public class FramePropertyTests
         from z in Unit
         select new Vector3(x * 10f, y * 10f, z * 10f);
 
-    private static Config Cfg => Config.QuickThrowOnFailure.WithMaxTest(500).WithReplay(12345UL, 0x9E3779B97F4A7C15UL);
+    private static Config Cfg => PropertyAssert.Replayable(500, 12345UL, 0x9E3779B97F4A7C15UL);
 
     [Fact]
     public void LocalToGlobalThenGlobalToLocal_RoundTrips()
     {
         // Bound: origins up to 192 m have float spacing 1.5e-5; two transforms and a subtraction keep the error below 1e-4.
-        Check.One(Cfg, Prop.ForAll(Frames.ToArbitrary(), Points.ToArbitrary(), (f, p) =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Frames.ToArbitrary(), Points.ToArbitrary(), (f, p) =>
             Vector3.Distance(f.GlobalToLocal(f.LocalToGlobal(p)), p) < 1e-4f));
     }
 
     [Fact]
     public void CombineThenSubtract2_GivesBackTheLocalFrame()
     {
-        Check.One(Cfg, Prop.ForAll(Frames.ToArbitrary(), Frames.ToArbitrary(), (a, b) =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Frames.ToArbitrary(), Frames.ToArbitrary(), (a, b) =>
         {
             Frame ab = Frame.Combined(a, b);
             Frame back = Frame.Identity;
@@ -56,7 +56,7 @@ public class FramePropertyTests
     [Fact]
     public void EveryOperation_KeepsTheFrameValid()
     {
-        Check.One(Cfg, Prop.ForAll(Frames.ToArbitrary(), Points.ToArbitrary(), (f, w) =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Frames.ToArbitrary(), Points.ToArbitrary(), (f, w) =>
         {
             Frame g = f;
             g.GRotate(w);
@@ -71,7 +71,7 @@ public class FramePropertyTests
     [Fact]
     public void SetHeadingThenGetHeading_AgreesOnTheCircle()
     {
-        Check.One(Cfg, Prop.ForAll(Gen.Choose(-720_000, 720_000).ToArbitrary(), milli =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Gen.Choose(-720_000, 720_000).ToArbitrary(), milli =>
         {
             float h = milli / 1000f;
             Frame f = Frame.Identity;
@@ -91,7 +91,7 @@ public class FramePropertyTests
             from milliX in Gen.Choose(-190_000, 380_000)
             from milliY in Gen.Choose(-190_000, 380_000)
             select (blockX, blockY, milliX, milliY);
-        Check.One(Cfg, Prop.ForAll(cases.ToArbitrary(), c =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(cases.ToArbitrary(), c =>
             {
                 (int bx, int by, int mx, int my) = c;
                 uint id = ((uint)bx << 24) | ((uint)by << 16) | 1u;

@@ -27,7 +27,7 @@ public class SweepPropertyTests
         from dt in Gen.Elements(34, 50, 100, 200, 450) // ms per tick (450: two slices and a remainder)
         select new Case(seed, rough, speed, turn, heading, jump, dt);
 
-    private static Config Cfg => Config.QuickThrowOnFailure.WithMaxTest(60).WithReplay(20261122UL, 0x5851F42D4C957F2DUL);
+    private static Config Cfg => PropertyAssert.Replayable(60, 20261122UL, 0x5851F42D4C957F2DUL);
 
     [Fact]
     public void RandomWalkers_OnRandomTerrain_AreNeverLostNorBelowTheSurface()
@@ -37,7 +37,7 @@ public class SweepPropertyTests
         // -EPSILON is not pushed; within +-EPSILON is contact), i.e. EPSILON / N.z vertically; on top of that the height query
         // and the stored origin round by 1.5e-5 m below 256 m, and make_plane's rounding of the plane is 5e-5 m at 192 m
         // (TerrainSweepHardCasesTests): bound EPSILON / N.z + 1e-4 m, N.z of the triangle under the origin.
-        Check.One(Cfg, Prop.ForAll(Cases.ToArbitrary(), c =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Cases.ToArbitrary(), c =>
         {
             TerrainWorld terrain = SweepScene.Terrain();
             for (int bx = SweepScene.BlockX - 1; bx <= SweepScene.BlockX + 1; bx++)

@@ -36,7 +36,7 @@ public class UpdateStreamPropertyTests
         from dt in Gen.Frequency((8, Gen.Choose(34, 120)), (1, Gen.Choose(121, 500)), (1, Gen.Choose(1, 33)))
         select new Event(kind, a, b, dt);
 
-    private static Config Cfg => Config.QuickThrowOnFailure.WithMaxTest(150).WithReplay(20261122UL, 0x2545F4914F6CDD1DUL);
+    private static Config Cfg => PropertyAssert.Replayable(150, 20261122UL, 0x2545F4914F6CDD1DUL);
 
     [Fact]
     public void QueueNeverExceedsTwenty_AndNoFrameMovesFasterThanTheCapExceptAPlacement()
@@ -46,7 +46,7 @@ public class UpdateStreamPropertyTests
         // (zero velocity, no gravity), the constraint only shrinks offsets. So a frame that did not place the creature moves it
         // at most 8 m/s * (the simulated time: update_time after - before). Float rounding of the origin (below 256 m: 1.5e-5
         // m per operation, a few operations per step, at most 10 steps per frame): allow 1e-3 m.
-        Check.One(Cfg, Prop.ForAll(Gen.ArrayOf(Events, 120).ToArbitrary(), events =>
+        PropertyAssert.Holds(Cfg, Prop.ForAll(Gen.ArrayOf(Events, 120).ToArbitrary(), events =>
         {
             var s = new ManagerScene(new Vector3(96f, 80f, 0f));
             s.World.Tick(0.05);

@@ -38,87 +38,18 @@ public sealed partial class PhysicsObj
             }
         }
 
-        double now = world.CurrentTime;
-        double dt = now - UpdateTime;
-        world.PhysicsTime = UpdateTime;
-        PhysicsProfile profile = world.Profile;
-        if (profile.AccumulateBelowMinQuantum)
+        // The profile's slicing (retail: EPSILON gate, MaxQuantum slices, remainder above MinQuantum; ACE: 1/30 s gate that
+        // keeps accumulating time, 0.1 s slices). See QuantumSlicer.
+        double start = UpdateTime;
+        world.PhysicsTime = start;
+        var slicer = new QuantumSlicer(world.Profile, start, world.CurrentTime);
+        while (slicer.Next(out double quantum))
         {
-            UpdateObjectAce(world, profile, now, dt);
-            return;
+            world.PhysicsTime = slicer.Time;
+            UpdateObjectInternal((float)quantum);
         }
 
-        if (dt > PhysicsGlobals.Epsilon)
-        {
-            if (dt <= profile.HugeQuantum)
-            {
-                double maxQuantum = profile.MaxQuantum;
-                if (dt > maxQuantum)
-                {
-                    do
-                    {
-                        world.PhysicsTime += maxQuantum;
-                        UpdateObjectInternal((float)maxQuantum);
-                        dt -= maxQuantum;
-                    }
-                    while (dt > maxQuantum);
-
-                    if (dt > profile.MinQuantum)
-                    {
-                        world.PhysicsTime += dt;
-                        UpdateObjectInternal((float)dt);
-                    }
-                }
-                else
-                {
-                    // One whole step, with no MinQuantum test (the founding reference's "nothing at 60 fps" is wrong).
-                    world.PhysicsTime += dt;
-                    UpdateObjectInternal((float)dt);
-                }
-
-                UpdateTime = world.PhysicsTime;
-            }
-            else
-            {
-                UpdateTime = now;
-            }
-        }
-        else
-        {
-            UpdateTime = now;
-        }
-    }
-
-    // ACE's update_object: a dt below 1/30 returns WITHOUT consuming time (it accumulates), 0.1 s slices. Not retail:
-    // selected only by PhysicsProfile.AceCompatible.
-    private void UpdateObjectAce(PhysicsWorld world, PhysicsProfile profile, double now, double dt)
-    {
-        if (dt < profile.MinQuantum)
-        {
-            return;
-        }
-
-        if (dt > profile.HugeQuantum)
-        {
-            UpdateTime = now;
-            return;
-        }
-
-        double maxQuantum = profile.MaxQuantum;
-        while (dt > maxQuantum)
-        {
-            world.PhysicsTime += maxQuantum;
-            UpdateObjectInternal((float)maxQuantum);
-            dt -= maxQuantum;
-        }
-
-        if (dt > profile.MinQuantum)
-        {
-            world.PhysicsTime += dt;
-            UpdateObjectInternal((float)dt);
-        }
-
-        UpdateTime = world.PhysicsTime;
+        UpdateTime = slicer.EndTime(start);
     }
 
     /// <summary>One simulation step of <paramref name="quantum"/> seconds (active: move, sweep or set the frame, run the

@@ -236,61 +236,15 @@ public sealed partial class PhysicsWorld
         _pendingCount = 0;
     }
 
-    /// <summary>Retail's consumed-time arithmetic of update_object, without the steps: the update_time an idle object ends with.</summary>
+    /// <summary>update_object's consumed-time arithmetic without the steps: the update_time an idle object ends with.</summary>
     private double Consume(double updateTime, double now)
     {
-        PhysicsProfile p = Profile;
-        double dt = now - updateTime;
-        double t = updateTime;
-        if (p.AccumulateBelowMinQuantum)
+        var slicer = new QuantumSlicer(Profile, updateTime, now);
+        while (slicer.Next(out _))
         {
-            if (dt < p.MinQuantum)
-            {
-                return updateTime;
-            }
-
-            if (dt > p.HugeQuantum)
-            {
-                return now;
-            }
-
-            while (dt > p.MaxQuantum)
-            {
-                t += p.MaxQuantum;
-                dt -= p.MaxQuantum;
-            }
-
-            if (dt > p.MinQuantum)
-            {
-                t += dt;
-            }
-
-            return t;
         }
 
-        if (!(dt > PhysicsGlobals.Epsilon) || dt > p.HugeQuantum)
-        {
-            return now;
-        }
-
-        if (dt > p.MaxQuantum)
-        {
-            do
-            {
-                t += p.MaxQuantum;
-                dt -= p.MaxQuantum;
-            }
-            while (dt > p.MaxQuantum);
-
-            if (dt > p.MinQuantum)
-            {
-                t += dt;
-            }
-
-            return t;
-        }
-
-        return t + dt;
+        return slicer.EndTime(updateTime);
     }
 
     /// <summary>The scene's world tick: visits the awake objects in order, wakes those the player's travel may have carried across
