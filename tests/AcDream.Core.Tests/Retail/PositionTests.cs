@@ -17,6 +17,21 @@ public class PositionTests
     }
 
     [Fact]
+    public void GetOffset_KeepsTheXSumInDouble_AndRoundsYAndZ_AsRetail()
+    {
+        // acclient.c:311690: x = (192 + p.x) stays in an x87 register, y and z sums are spilled to floats.
+        // x: 192 + 0.1f = 192.100000001490116 (double) - 191.9f (191.899993896484375) = 0.200006105005741 -> float 0.2000061.
+        //    Rounded through float first it would be 192.1000061 - 191.8999939 = 0.2000122.
+        // y: 192 + 0.1f rounds to 192.100006103515625 (float), minus 191.9f = 0.20001220703125.
+        var a = new Position(0xA9B40039u, new Vector3(191.9f, 191.9f, 0f));
+        var b = new Position(0xAAB50001u, new Vector3(0.1f, 0.1f, 0f));
+        Vector3 off = a.GetOffset(b);
+        Assert.Equal((float)(192.0 + (double)0.1f - (double)191.9f), off.X);
+        Assert.Equal(0.20001220703125f, off.Y);
+        Assert.NotEqual(off.Y, off.X);
+    }
+
+    [Fact]
     public void Distance_AcrossLandblockCorner_IsHypotenuse()
     {
         // a at (191, 191) in 0xA9B4; b at (2, 3) in 0xAAB5 (north-east): offset (3, 4, 0) -> 5.

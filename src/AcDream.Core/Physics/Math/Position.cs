@@ -47,10 +47,11 @@ public struct Position : IEquatable<Position>
     public readonly Vector3 GetOffset(in Position p)
     {
         Vector3 b = LandDefs.GetBlockOffset(ObjCellId, p.ObjCellId);
-        float x = b.X + p.Frame.Origin.X;
+        // As retail's x87 code: the x sum stays in a register (double); the y and z sums are spilled to floats.
+        double x = (double)b.X + p.Frame.Origin.X;
         float y = b.Y + p.Frame.Origin.Y;
         float z = b.Z + p.Frame.Origin.Z;
-        return new Vector3(x - Frame.Origin.X, y - Frame.Origin.Y, z - Frame.Origin.Z);
+        return new Vector3((float)(x - Frame.Origin.X), y - Frame.Origin.Y, z - Frame.Origin.Z);
     }
 
     /// <summary>The vector from this origin to the point <paramref name="v"/> local to <paramref name="p"/>'s frame.</summary>
