@@ -9,7 +9,8 @@ namespace AcDream.Core.Benchmarks;
 /// A scene pays only for what moves: one world tick with 100 walking creatures (one of them the player) among 0, 10,000 or
 /// 100,000 resting or static objects (half resting items, half static scenery, on a 1.44 m grid over a 576 x 360 m area around
 /// the player). The resting objects are dormant and never visited; the only per-tick cost they add is the exact 96 m gate:
-/// objects the walking player's 96 m circle sweeps over are re-measured. Mean per world tick.
+/// dormant objects within a few metres of the walking player's 96 m circle are re-measured from their gate-queue entries, and
+/// those it passes over change side without a visit. Mean per world tick.
 /// </summary>
 [MemoryDiagnoser]
 public class SceneRestingObjectsBenchmarks

@@ -28,12 +28,11 @@ public sealed partial class PhysicsObj
     internal bool _sleepPhaseActive;
     internal bool _inActiveList;
     internal bool _pendingWake;
-    internal int _queueStamp;
     internal GateQueue? _gateQueue;
+    internal int _gateSlot = -1;
     private double _updateTime;
     private Vector3 _playerVector;
     internal float _playerDistance;
-    internal float _playerDistanceAtSleep;
 
     /// <summary>True while the scene skips this object because its retail update would change nothing but bookkeeping.</summary>
     public bool IsDormant => _dormancy != Dormancy.Awake;
@@ -55,28 +54,78 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Writes the lazily evaluated bookkeeping into the fields (as of the world's last completed visit of this object).</summary>
+    /// <remarks>An idle object the player's travel carried across the 96 m gate while dormant takes the state retail's visit in
+    /// that tick left (<see cref="GateQueue.RecordFlip"/>): update_object (acclient.c:323080) clears ACTIVE beyond 96 m, and the
+    /// idle steps leave update_time at the consumed time (the scene records a crossing only when that is the world's consumed
+    /// clock); within 96 m, set_active(1) sets ACTIVE and restarts update_time at now, so the slicing sees dt = 0. From there
+    /// an object on walkable ground deactivates itself on its next step and is re-activated on the one after (ping-pong).</remarks>
     internal void Materialize(bool visitedThisTick)
     {
         PhysicsWorld w = World;
-        switch (_dormancy)
+        Dormancy kind = _dormancy;
+        long sleepTick = _sleepTick;
+        bool phaseActive = _sleepPhaseActive;
+        if (_gateQueue is not null
+            && _gateQueue.LastFlip(_gateSlot, visitedThisTick ? w.SceneTick : w.SceneTick - 1, out long flipTick, out bool far))
         {
-            case Dormancy.ConsumedClock:
-                _updateTime = visitedThisTick ? w.ConsumedClockNow : w.ConsumedClockPrev;
-                break;
-            case Dormancy.PingPong:
-                bool active = w.PingPongActive(_sleepTick, _sleepPhaseActive, visitedThisTick);
-                _transientState = active ? _transientState | TransientState.Active : _transientState & ~TransientState.Active;
-                _updateTime = active ? w.TickTime(visitedThisTick) : w.PingPongTime(visitedThisTick);
-                break;
-            default:
-                return;
+            if (far)
+            {
+                kind = Dormancy.ConsumedClock;
+                phaseActive = false;
+            }
+            else if ((_transientState & TransientState.OnWalkable) != 0)
+            {
+                kind = Dormancy.PingPong;
+                sleepTick = flipTick;
+                phaseActive = true;
+            }
+            else
+            {
+                kind = Dormancy.ConsumedClock;
+                phaseActive = true;
+            }
         }
 
+        if (!Evaluate(kind, sleepTick, phaseActive, visitedThisTick, out bool active, out double updateTime))
+        {
+            return;
+        }
+
+        SetBookkeeping(active, updateTime);
         if (w.PlayerSeenPosition(this, visitedThisTick, out Position seen))
         {
             Vector3 pv = seen.GetOffset(_position);
             _playerVector = pv;
             _playerDistance = (float)System.Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+        }
+    }
+
+    private void SetBookkeeping(bool active, double updateTime)
+    {
+        _transientState = active ? _transientState | TransientState.Active : _transientState & ~TransientState.Active;
+        _updateTime = updateTime;
+    }
+
+    /// <summary>The ACTIVE bit and update_time a dormancy kind gives after the last (or the previous) tick; false for kinds with
+    /// no lazy bookkeeping. <paramref name="phaseActive"/> is the ACTIVE bit at <paramref name="sleepTick"/> (constant for
+    /// <see cref="Dormancy.ConsumedClock"/>).</summary>
+    private bool Evaluate(Dormancy kind, long sleepTick, bool phaseActive, bool visitedThisTick, out bool active, out double updateTime)
+    {
+        PhysicsWorld w = World;
+        switch (kind)
+        {
+            case Dormancy.ConsumedClock:
+                active = phaseActive;
+                updateTime = visitedThisTick ? w.ConsumedClockNow : w.ConsumedClockPrev;
+                return true;
+            case Dormancy.PingPong:
+                active = w.PingPongActive(sleepTick, phaseActive, visitedThisTick);
+                updateTime = active ? w.TickTime(visitedThisTick) : w.PingPongTime(visitedThisTick);
+                return true;
+            default:
+                active = false;
+                updateTime = 0.0;
+                return false;
         }
     }
 
@@ -92,7 +141,7 @@ public sealed partial class PhysicsObj
 
     private TransientState LazyTransientState()
     {
-        if (_dormancy == Dormancy.PingPong)
+        if (_dormancy is Dormancy.ConsumedClock or Dormancy.PingPong)
         {
             Materialize(World.IsVisitedThisTick(this));
         }

@@ -69,7 +69,7 @@ public sealed partial class PhysicsObj
     public PhysicsState State => _state;
 
     /// <summary>Per-frame state bits (retail <c>transient_state</c>).</summary>
-    public TransientState TransientState => _dormancy == Dormancy.PingPong ? LazyTransientState() : _transientState;
+    public TransientState TransientState => _dormancy == Dormancy.Awake ? _transientState : LazyTransientState();
 
     /// <summary>True when the ACTIVE transient bit is set: the object is simulated.</summary>
     public bool IsActive => (TransientState & TransientState.Active) != 0;

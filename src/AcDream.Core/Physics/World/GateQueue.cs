@@ -1,104 +1,248 @@
 using System;
-using System.Collections.Generic;
+using System.Numerics;
 
 namespace AcDream.Core.Physics;
 
 /// <summary>
-/// Dormant objects whose side of the 96 m player gate the player's travel could change, keyed by the player odometer reading
-/// at which that first becomes possible. Entries of objects woken since they were queued are stale and skipped; they are dropped
-/// before the queue would grow, so sleep/wake cycles never allocate.
+/// Dormant objects whose side of the 96 m player gate the player's travel could change: each is re-measured only once the
+/// player could have carried it across (its distance margin to 96 m; distance is 1-Lipschitz in the player's position).
+/// One queue per side of the player in the visiting order (objects before the player see its position before its update).
 /// </summary>
+/// <remarks>
+/// <para>Two clocks bound the player's displacement since an entry was measured. Small margins (&lt; <see cref="Split"/>) wait on
+/// the <i>odometer</i> (path length). Large margins wait on an <i>anchor clock</i>: an anchor that follows the player in hops of
+/// more than <see cref="AnchorRadius"/>; the clock is the hops' total plus that radius, and an entry measured at distance r from
+/// the anchor is due once the clock passes (clock then) + margin − r. A player moving about one spot never re-measures far
+/// objects; on a straight walk both clocks advance alike.</para>
+/// <para>Entries carry what a re-measurement needs, so re-measuring reads no object. A crossing by an idle object is recorded in
+/// the slot (<see cref="RecordFlip"/>) and applied when the object is next read; only objects that must move are woken.</para>
+/// <para>Slots carry a generation: <see cref="Forget"/> bumps it and the entry, now stale, is dropped when met, or by a compaction
+/// once stale entries outnumber live ones, so memory stays bounded by the live count and, once grown, never allocates.</para>
+/// </remarks>
 internal sealed class GateQueue
 {
-    private readonly PriorityQueue<(PhysicsObj Obj, int Stamp), double> _queue = new(64);
-    private int _capacity = 64;
-    private int _live;
-    private (PhysicsObj Obj, int Stamp)[] _scratch = new (PhysicsObj, int)[16];
-    private double[] _scratchKeys = new double[16];
+    /// <summary>Margins below this (metres) wait on the odometer; larger ones on the anchor clock.</summary>
+    public const double Split = 8.0;
 
-    public void Enqueue(PhysicsObj o, double key)
+    /// <summary>How far (metres) the player may stray from the anchor before it hops.</summary>
+    public const double AnchorRadius = 4.0;
+
+    private const long NoFlip = long.MinValue;
+
+    private readonly GateWheel _odometerWheel;
+    private readonly GateWheel _anchorWheel;
+
+    // Slots: the object, its generation, and its last two gate crossings since it was queued (tick and side).
+    private PhysicsObj?[] _obj = new PhysicsObj?[64];
+    private int[] _generation = new int[64];
+    private long[] _flipTick = new long[64];
+    private long[] _prevFlipTick = new long[64];
+    private bool[] _flipFar = new bool[64];
+    private bool[] _prevFlipFar = new bool[64];
+    private int[] _free = new int[64];
+    private int _freeCount;
+    private int _slotCount;
+    private int _stale;
+
+    // The clocks as of this tick's Advance.
+    private double _odometer;
+    private double _anchorTotal;
+    private double _anchorX, _anchorY, _anchorZ;
+    private bool _hasAnchor;
+    private double _fromAnchor;
+    private double _seenX, _seenY, _seenZ;
+
+    public GateQueue()
     {
-        if (o._gateQueue != this)
-        {
-            Forget(o);
-            o._gateQueue = this;
-            _live++;
-        }
-
-        if (_queue.Count >= _capacity)
-        {
-            Compact();
-            if (_queue.Count >= _capacity / 2)
-            {
-                _capacity = _queue.EnsureCapacity(_capacity * 2);
-            }
-        }
-
-        _queue.Enqueue((o, o._queueStamp), key);
+        _odometerWheel = new GateWheel(this);
+        _anchorWheel = new GateWheel(this);
     }
 
-    /// <summary>Invalidates <paramref name="o"/>'s entry, in whichever queue holds it.</summary>
+    /// <summary>Number of objects queued.</summary>
+    public int Live => _slotCount - _freeCount;
+
+    /// <summary>Entries held, stale ones included (at most about twice <see cref="Live"/> plus a constant).</summary>
+    public int EntryCount => _odometerWheel.Count + _anchorWheel.Count;
+
+    /// <summary>The seen player position of this tick (global), as passed to <see cref="Advance"/>.</summary>
+    public void Seen(out double x, out double y, out double z)
+    {
+        x = _seenX;
+        y = _seenY;
+        z = _seenZ;
+    }
+
+    /// <summary>The object of a popped entry.</summary>
+    public PhysicsObj Object(in GateEntry e) => _obj[e.Slot]!;
+
+    internal bool IsLive(in GateEntry e) => _generation[e.Slot] == e.Generation;
+
+    internal void StaleDropped() => _stale--;
+
+    /// <summary>
+    /// Starts this tick for the queue: the odometer reading and the player position the queue's objects see, then pops the live
+    /// entries now due into <paramref name="due"/> (grown as needed) and returns their number. Each popped object stays queued:
+    /// the caller re-queues it (<see cref="Requeue"/>) or forgets it.
+    /// </summary>
+    public int Advance(double odometer, in Position seen, ref GateEntry[] due)
+    {
+        _odometer = odometer;
+        uint cell = seen.ObjCellId;
+        _seenX = ((cell >> 24) & 0xFF) * 192.0 + seen.Frame.Origin.X;
+        _seenY = ((cell >> 16) & 0xFF) * 192.0 + seen.Frame.Origin.Y;
+        _seenZ = seen.Frame.Origin.Z;
+        if (!_hasAnchor)
+        {
+            SetAnchor();
+            _hasAnchor = true;
+        }
+
+        double dx = _seenX - _anchorX, dy = _seenY - _anchorY, dz = _seenZ - _anchorZ;
+        _fromAnchor = Math.Sqrt(dx * dx + dy * dy + dz * dz);
+        if (_fromAnchor > AnchorRadius)
+        {
+            _anchorTotal += _fromAnchor;
+            SetAnchor();
+            _fromAnchor = 0.0;
+        }
+
+        if (_stale > 1024 && _stale > EntryCount - _stale)
+        {
+            _odometerWheel.Compact();
+            _anchorWheel.Compact();
+            _stale = 0; // (the count may run high: an object woken after its entry was popped leaves nothing behind)
+        }
+
+        int n = _odometerWheel.PopDue(_odometer, ref due, 0);
+        return _anchorWheel.PopDue(_anchorTotal + AnchorRadius, ref due, n);
+    }
+
+    private void SetAnchor()
+    {
+        _anchorX = _seenX;
+        _anchorY = _seenY;
+        _anchorZ = _seenZ;
+    }
+
+    /// <summary>Queues <paramref name="o"/> (queued nowhere), measured against this tick's seen position with the given side and
+    /// safe margin (metres the player may travel before it could cross).</summary>
+    public void Add(PhysicsObj o, bool far, bool idle, bool onWalkable, double margin)
+    {
+        int slot;
+        if (_freeCount != 0)
+        {
+            slot = _free[--_freeCount];
+        }
+        else
+        {
+            if (_slotCount == _obj.Length)
+            {
+                GrowSlots();
+            }
+
+            slot = _slotCount++;
+        }
+
+        _obj[slot] = o;
+        _flipTick[slot] = NoFlip;
+        _prevFlipTick[slot] = NoFlip;
+        o._gateQueue = this;
+        o._gateSlot = slot;
+        uint cell = o._position.ObjCellId;
+        Vector3 origin = o._position.Frame.Origin;
+        var e = new GateEntry
+        {
+            X = origin.X,
+            Y = origin.Y,
+            Z = origin.Z,
+            Slot = slot,
+            Generation = _generation[slot],
+            BlockX = (byte)(cell >> 24),
+            BlockY = (byte)(cell >> 16),
+            Flags = (byte)((far ? GateFlags.Far : 0) | (idle ? GateFlags.Idle : 0) | (onWalkable ? GateFlags.OnWalkable : 0)),
+        };
+        Requeue(e, margin);
+    }
+
+    /// <summary>Puts a popped entry back, re-measured with <paramref name="margin"/> against this tick's seen position.</summary>
+    public void Requeue(GateEntry e, double margin)
+    {
+        if (margin < Split)
+        {
+            e.Key = _odometer + margin;
+            _odometerWheel.Push(e);
+        }
+        else
+        {
+            // Displacement since now <= (anchor total then - now) + the player's distance from the anchor then + now.
+            e.Key = _anchorTotal + margin - _fromAnchor;
+            _anchorWheel.Push(e);
+        }
+    }
+
+    /// <summary>Records that the slot's idle object crossed the gate in tick <paramref name="tick"/> (to the far side when
+    /// <paramref name="far"/>); the last two crossings are kept, enough to answer for this tick and the one before.</summary>
+    public void RecordFlip(int slot, long tick, bool far)
+    {
+        _prevFlipTick[slot] = _flipTick[slot];
+        _prevFlipFar[slot] = _flipFar[slot];
+        _flipTick[slot] = tick;
+        _flipFar[slot] = far;
+    }
+
+    /// <summary>The last crossing of the slot's object in or before tick <paramref name="tick"/>, if any since it was queued.</summary>
+    public bool LastFlip(int slot, long tick, out long flipTick, out bool far)
+    {
+        if (_flipTick[slot] != NoFlip && _flipTick[slot] <= tick)
+        {
+            flipTick = _flipTick[slot];
+            far = _flipFar[slot];
+            return true;
+        }
+
+        if (_prevFlipTick[slot] != NoFlip && _prevFlipTick[slot] <= tick)
+        {
+            flipTick = _prevFlipTick[slot];
+            far = _prevFlipFar[slot];
+            return true;
+        }
+
+        flipTick = 0;
+        far = false;
+        return false;
+    }
+
+    /// <summary>Takes <paramref name="o"/> out of whichever queue holds it (no effect when none does); its entry becomes stale.</summary>
     public static void Forget(PhysicsObj o)
     {
-        o._queueStamp++;
         GateQueue? q = o._gateQueue;
-        if (q is not null)
+        if (q is null)
         {
-            q._live--;
-            o._gateQueue = null;
+            return;
         }
+
+        int slot = o._gateSlot;
+        q._generation[slot]++;
+        q._obj[slot] = null;
+        if (q._freeCount == q._free.Length)
+        {
+            Array.Resize(ref q._free, q._free.Length * 2);
+        }
+
+        q._free[q._freeCount++] = slot;
+        q._stale++;
+        o._gateQueue = null;
+        o._gateSlot = -1;
     }
 
-    /// <summary>Removes the live entries due at <paramref name="odometer"/> into <paramref name="due"/> (grown as needed) and
-    /// returns their number; each is forgotten (re-enqueue it to keep it).</summary>
-    public int PopDue(double odometer, ref PhysicsObj[] due)
+    private void GrowSlots()
     {
-        int n = 0;
-        while (_queue.TryPeek(out (PhysicsObj Obj, int Stamp) e, out double key) && key <= odometer)
-        {
-            _queue.Dequeue();
-            if (e.Obj._queueStamp != e.Stamp || e.Obj._gateQueue != this || e.Obj._dormancy == Dormancy.Awake || e.Obj.WorldIndex < 0)
-            {
-                continue;
-            }
-
-            Forget(e.Obj);
-            if (n == due.Length)
-            {
-                Array.Resize(ref due, n * 2);
-            }
-
-            due[n++] = e.Obj;
-        }
-
-        return n;
-    }
-
-    private void Compact()
-    {
-        int n = 0;
-        while (_queue.TryDequeue(out (PhysicsObj Obj, int Stamp) e, out double key))
-        {
-            if (e.Obj._queueStamp != e.Stamp || e.Obj._gateQueue != this)
-            {
-                continue;
-            }
-
-            if (n == _scratch.Length)
-            {
-                Array.Resize(ref _scratch, n * 2);
-                Array.Resize(ref _scratchKeys, n * 2);
-            }
-
-            _scratch[n] = e;
-            _scratchKeys[n] = key;
-            n++;
-        }
-
-        for (int i = 0; i < n; i++)
-        {
-            _queue.Enqueue(_scratch[i], _scratchKeys[i]);
-            _scratch[i] = default;
-        }
+        int size = _obj.Length * 2;
+        Array.Resize(ref _obj, size);
+        Array.Resize(ref _generation, size);
+        Array.Resize(ref _flipTick, size);
+        Array.Resize(ref _prevFlipTick, size);
+        Array.Resize(ref _flipFar, size);
+        Array.Resize(ref _prevFlipFar, size);
     }
 }

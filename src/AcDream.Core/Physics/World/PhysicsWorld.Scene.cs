@@ -14,8 +14,11 @@ namespace AcDream.Core.Physics;
 /// a few clocks the world keeps per tick, to exactly the values retail would hold. Everything simulated (frames, velocities, cell
 /// ids, contact state, hooks) is bit-identical to visiting every object (<see cref="VisitEveryObject"/>), which the tests check.</para>
 /// <para>Objects wake on events, not by scanning: any mutating member (velocity, omega, hooks, interpolation, placement, state,
-/// components…) wakes its object; an object whose distance to the player may cross the 96 m gate is re-measured only when the
-/// player has travelled far enough for that to be possible (an odometer queue), so a still player costs nothing.</para>
+/// components…) wakes its object. A dormant object whose distance to the player may cross the 96 m gate is re-measured only when
+/// the player has moved far enough for that to be possible (<see cref="GateQueue"/>: the player's path for small margins, its
+/// displacement from a hopping anchor for large ones), from a copy of its position, so a still player costs nothing and a
+/// re-measurement reads no object. An idle object that crosses is not visited either: the crossing is recorded and its
+/// bookkeeping follows retail's from that tick on. Only objects that would move once near are woken by a crossing.</para>
 /// <para>Objects are visited in ascending id order (then creation order), whatever the order in which they were created or woken.</para>
 /// </remarks>
 public sealed partial class PhysicsWorld
@@ -39,7 +42,7 @@ public sealed partial class PhysicsWorld
     // is re-measured once per tick against the position it sees.
     private readonly GateQueue _gateBefore = new();
     private readonly GateQueue _gateAfter = new();
-    private PhysicsObj[] _gateDue = new PhysicsObj[16];
+    private GateEntry[] _gateDue = new GateEntry[16];
 
     /// <summary>
     /// The effects this scene simulates; <see cref="SceneEffects.All"/> (retail) by default. Declare fewer to pay for fewer.
@@ -58,6 +61,10 @@ public sealed partial class PhysicsWorld
     /// </summary>
     public GateTracking GateTracking { get; init; } = GateTracking.Exact;
 
+    /// <summary>Gate statistics since the world was created: dormant objects re-measured against the 96 m gate, crossings
+    /// handled without a visit, and crossings (or too-close calls) that woke the object.</summary>
+    internal long GateRemeasures, GateFlips, GateWakes;
+
     /// <summary>Number of objects visited by the last tick (awake objects).</summary>
     public int LastTickVisitCount { get; private set; }
 
@@ -65,6 +72,15 @@ public sealed partial class PhysicsWorld
     public int DormantCount => _count - _activeCount - _pendingCount;
 
     internal double ConsumedClockNow => _consumedNow;
+
+    /// <summary>Number of scene ticks so far (the tick in progress during a tick).</summary>
+    internal long SceneTick => _tick;
+
+    // Whether this tick's retail visit of an idle object that crosses the gate leaves a state a dormancy kind describes: beyond
+    // 96 m its update_time must come out as the world's consumed clock from any update_time an idle object can hold (the tick
+    // time, the ping-pong time or the consumed clock of the tick before); within, one off walkable ground keeps ACTIVE and
+    // update_time = now, which must be the consumed clock. Both hold but after stalls that leave time unconsumed.
+    private bool _flipToFarOk, _flipToNearOk;
 
     internal double ConsumedClockPrev => _consumedPrev;
 
@@ -74,6 +90,10 @@ public sealed partial class PhysicsWorld
 
     /// <summary>Distances within this margin of the 96 m gate are not predicted; the object stays awake.</summary>
     internal float GateSafetyMargin(float distance) => 1e-3f + distance * 1e-5f;
+
+    /// <summary>How far a gate margin is cut for rounding: retail's distance (float offsets, spilled sums) and the queue's
+    /// double estimate differ by a few float ulps of the block-relative coordinates, far below this.</summary>
+    private static double GateKeySlack(double distance) => 2e-4 + distance * 2e-6;
 
     /// <summary>True when, during a tick, the object's place in the visiting order has already passed (retail already visited it).</summary>
     internal bool IsVisitedThisTick(PhysicsObj obj) => !_inTick || (_current is not null && obj.WorldIndex <= _current.WorldIndex);
@@ -184,12 +204,6 @@ public sealed partial class PhysicsWorld
 
     private int _activeCursor;
 
-    private void GateEnqueue(PhysicsObj o, double key)
-    {
-        bool before = _player is not null && o.WorldIndex < _player.WorldIndex;
-        (before ? _gateBefore : _gateAfter).Enqueue(o, key);
-    }
-
     private static void GateForget(PhysicsObj o) => GateQueue.Forget(o);
 
     private void RemoveFromVisiting(PhysicsObj obj)
@@ -263,6 +277,8 @@ public sealed partial class PhysicsWorld
         _consumedNow = Consume(_consumedNow, CurrentTime);
         _pingPongPrev = _pingPongNow;
         _pingPongNow = Consume(LastUpdate, CurrentTime);
+        _flipToFarOk = Consume(_tickTimePrev, CurrentTime) == _consumedNow && Consume(_pingPongPrev, CurrentTime) == _consumedNow;
+        _flipToNearOk = _tickTimeNow == _consumedNow;
         bool hadPlayer = _playerSeenNow is not null;
         _playerSeenPrev = _playerSeenNow;
         _playerBeforePrev = _playerBeforeNow;
@@ -326,41 +342,78 @@ public sealed partial class PhysicsWorld
         return Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y + (double)d.Z * d.Z);
     }
 
-    /// <summary>Re-measures the dormant gated objects whose margin the player's travel may have used up; those that crossed the
-    /// 96 m gate (or came too close to call) are woken and visited later in this same tick, in order.</summary>
+    /// <summary>Re-measures the dormant gated objects whose margin the player's travel may have used up, from the positions the
+    /// queue holds (touching no object). An idle object that crossed the 96 m gate has the crossing recorded, and takes the state
+    /// this tick's visit leaves when next read (<see cref="PhysicsObj.Materialize"/>); an object that must move once near, one
+    /// whose crossing leaves a state no dormancy kind describes, and one too close to the boundary to call are woken and
+    /// visited later in this same tick, in order.</summary>
     private void PopGateCandidates(GateQueue queue, double odometer, in Position seen)
     {
-        int n = queue.PopDue(odometer, ref _gateDue);
+        int n = queue.Advance(odometer, seen, ref _gateDue);
+        if (n == 0)
+        {
+            return;
+        }
+
+        queue.Seen(out double sx, out double sy, out double sz);
+        GateRemeasures += n;
         for (int i = 0; i < n; i++)
         {
-            PhysicsObj o = _gateDue[i];
-            _gateDue[i] = null!;
-            Vector3 pv = seen.GetOffset(o._position);
-            double d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
-            float df = (float)d;
-            bool wasFar = o._playerDistanceAtSleep > PhysicsGlobals.PlayerActivityDistance;
-            bool isFar = d > PhysicsGlobals.PlayerActivityDistance;
-            float margin = MathF.Abs(df - PhysicsGlobals.PlayerActivityDistance);
-            if (wasFar != isFar || !(margin > GateSafetyMargin(df)))
+            ref GateEntry e = ref _gateDue[i];
+            e.Global(out double gx, out double gy, out double gz);
+            double dx = gx - sx, dy = gy - sy, dz = gz - sz;
+            double d = Math.Sqrt(dx * dx + dy * dy + dz * dz);
+            double margin = Math.Abs(d - PhysicsGlobals.PlayerActivityDistance);
+            double slack = GateKeySlack(d);
+            if (!(margin > 2.0 * slack))
             {
-                WakeDormant(o);
-                continue;
+                // Near the boundary: decide with retail's own arithmetic (update_object's get_offset and double sqrt).
+                PhysicsObj near = queue.Object(e);
+                Vector3 pv = seen.GetOffset(near._position);
+                d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+                margin = Math.Abs(d - PhysicsGlobals.PlayerActivityDistance);
+                slack = GateKeySlack(d);
+                if (!(margin > slack))
+                {
+                    GateWakes++;
+                    WakeDormant(near);
+                    continue;
+                }
             }
 
-            o._playerDistanceAtSleep = df;
-            queue.Enqueue(o, odometer + margin - GateSafetyMargin(df));
+            bool isFar = d > PhysicsGlobals.PlayerActivityDistance;
+            if (isFar != e.Far)
+            {
+                bool describable = (e.Flags & GateFlags.Idle) != 0
+                    && (isFar ? _flipToFarOk : (e.Flags & GateFlags.OnWalkable) != 0 || _flipToNearOk);
+                if (!describable)
+                {
+                    GateWakes++;
+                    WakeDormant(queue.Object(e));
+                    continue;
+                }
+
+                queue.RecordFlip(e.Slot, _tick, isFar);
+                e.Far = isFar;
+                GateFlips++;
+            }
+
+            queue.Requeue(e, margin - slack);
         }
     }
 
     /// <summary>After the visits: objects whose next visits would change nothing but bookkeeping leave the visiting list.</summary>
     private void PutIdleToSleep()
     {
+        // The gate queues measure against the player this tick began with; after a change of player mid-tick, gated objects
+        // wait a tick before they sleep.
+        bool gateReady = _player == _playerSeenNow;
         int w = 0;
         for (int i = 0; i < _activeCount; i++)
         {
             PhysicsObj o = _active[i];
             Dormancy d = o.ClassifyForSleep(out float margin);
-            if (d == Dormancy.Awake)
+            if (d == Dormancy.Awake || (!gateReady && !float.IsNaN(margin)))
             {
                 _active[w++] = o;
                 continue;
@@ -371,12 +424,17 @@ public sealed partial class PhysicsWorld
             o._sleepTick = _tick;
             o._sleepPhaseActive = (o._transientState & TransientState.Active) != 0;
             GateForget(o);
-            o._playerDistanceAtSleep = o._playerDistance;
-            if (!float.IsNaN(margin) && d != Dormancy.Bailed
-                && (GateTracking == GateTracking.Exact || !o.IsIdleForScene()))
+            if (!float.IsNaN(margin) && d != Dormancy.Bailed)
             {
-                double seenOdo = _player is not null && o.WorldIndex < _player.WorldIndex ? _odometerBefore : _odometer;
-                GateEnqueue(o, seenOdo + margin - GateSafetyMargin(o._playerDistance));
+                // Idle: it never moves on either side of the gate, so a crossing only changes its bookkeeping (no visit).
+                bool idle = o.IsIdleForScene();
+                if (GateTracking == GateTracking.Exact || !idle)
+                {
+                    bool before = _player is not null && o.WorldIndex < _player.WorldIndex;
+                    float pd = o._playerDistance;
+                    (before ? _gateBefore : _gateAfter).Add(o, pd > PhysicsGlobals.PlayerActivityDistance, idle,
+                        (o._transientState & TransientState.OnWalkable) != 0, margin - GateKeySlack(pd));
+                }
             }
         }
 
