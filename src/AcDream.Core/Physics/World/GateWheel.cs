@@ -69,7 +69,7 @@ internal sealed class GateWheel
         }
 
         _lastClock = clock;
-        long target = (long)Math.Floor(clock * NearScale);
+        long target = Index(clock);
         while (_near < target)
         {
             // Drain the near buckets up to the target or the end of the near level's range, then move to the next range.
@@ -133,13 +133,17 @@ internal sealed class GateWheel
         }
     }
 
+    // The near-bucket index of a clock reading (floor; readings are never negative). The platform's native conversion: .NET's
+    // saturating (long) cast costs a helper call here, and readings stay far inside the range where the two agree.
+    private static long Index(double reading) => double.ConvertToIntegerNative<long>(Math.Floor(reading * NearScale));
+
     private static int NearSlot(long index) => (int)(index & (NearBuckets - 1));
 
     private static int FarSlot(long index) => NearBuckets + (int)(index & (FarBuckets - 1));
 
     private int BucketFor(double key)
     {
-        long i = (long)Math.Floor(key * NearScale);
+        long i = Index(key);
         if (i < _near)
         {
             i = _near;
