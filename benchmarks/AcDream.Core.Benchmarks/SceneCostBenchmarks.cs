@@ -6,7 +6,8 @@ using BenchmarkDotNet.Attributes;
 namespace AcDream.Core.Benchmarks;
 
 /// <summary>
-/// A scene pays only for what moves: one world tick with 100 walking creatures (one of them the player) among 0, 10,000 or
+/// A scene pays only for what moves: one world tick with 100 creatures (one of them the player, walking or standing still; the
+/// other 99 walking) among 0, 10,000 or
 /// 100,000 resting or static objects (half resting items, half static scenery, on a 1.44 m grid over a 576 x 360 m area around
 /// the player). The resting objects are dormant and never visited; the only per-tick cost they add is the exact 96 m gate:
 /// dormant objects within a few metres of the walking player's 96 m circle are re-measured from their gate-queue entries, and
@@ -29,6 +30,10 @@ public class SceneRestingObjectsBenchmarks
     [Params(GateTracking.Exact, GateTracking.MovingObjectsOnly)]
     public GateTracking Gate { get; set; }
 
+    /// <summary>Whether the player walks with the other movers (true) or stands still among them (false).</summary>
+    [Params(true, false)]
+    public bool PlayerWalks { get; set; } = true;
+
     /// <summary>Builds the scene and ticks it until the resting objects are dormant.</summary>
     [GlobalSetup]
     public void Setup()
@@ -41,6 +46,11 @@ public class SceneRestingObjectsBenchmarks
         }
 
         _world.Player = _movers[0];
+        if (!PlayerWalks)
+        {
+            ((SimplePartArray)_movers[0].PartArray!).SequenceVelocity = System.Numerics.Vector3.Zero;
+        }
+
         for (int i = 0; i < Resting; i++)
         {
             // A 3 x 3 block area (576 m square) centred on block 0xA9B4; ids after the movers.
