@@ -199,9 +199,9 @@ public sealed partial class PhysicsObj
         if (gated)
         {
             farMargin = MathF.Abs(_playerDistance - PhysicsGlobals.PlayerActivityDistance);
-            if (!(farMargin > w.GateSafetyMargin(_playerDistance)))
+            if (!(farMargin > PhysicsWorld.GateSafetyMargin))
             {
-                return Dormancy.Awake; // too close to the 96 m boundary to predict; visit
+                return Dormancy.Awake; // its float distance may have rounded across 96 m: visit
             }
         }
 

@@ -32,13 +32,17 @@ internal sealed class GateQueue
     private readonly GateWheel _odometerWheel;
     private readonly GateWheel _anchorWheel;
 
-    // Slots: the object, its generation, and its last two gate crossings since it was queued (tick and side).
+    // The last two gate crossings of a slot's object since it was queued (tick and side): one cache line per record.
+    private struct Flips
+    {
+        public long Tick, PrevTick;
+        public bool Far, PrevFar;
+    }
+
+    // Slots: the object, its generation, its crossings.
     private PhysicsObj?[] _obj = new PhysicsObj?[64];
     private int[] _generation = new int[64];
-    private long[] _flipTick = new long[64];
-    private long[] _prevFlipTick = new long[64];
-    private bool[] _flipFar = new bool[64];
-    private bool[] _prevFlipFar = new bool[64];
+    private Flips[] _flips = new Flips[64];
     private int[] _free = new int[64];
     private int _freeCount;
     private int _slotCount;
@@ -144,8 +148,7 @@ internal sealed class GateQueue
         }
 
         _obj[slot] = o;
-        _flipTick[slot] = NoFlip;
-        _prevFlipTick[slot] = NoFlip;
+        _flips[slot] = new Flips { Tick = NoFlip, PrevTick = NoFlip };
         o._gateQueue = this;
         o._gateSlot = slot;
         uint cell = o._position.ObjCellId;
@@ -184,26 +187,28 @@ internal sealed class GateQueue
     /// <paramref name="far"/>); the last two crossings are kept, enough to answer for this tick and the one before.</summary>
     public void RecordFlip(int slot, long tick, bool far)
     {
-        _prevFlipTick[slot] = _flipTick[slot];
-        _prevFlipFar[slot] = _flipFar[slot];
-        _flipTick[slot] = tick;
-        _flipFar[slot] = far;
+        ref Flips f = ref _flips[slot];
+        f.PrevTick = f.Tick;
+        f.PrevFar = f.Far;
+        f.Tick = tick;
+        f.Far = far;
     }
 
     /// <summary>The last crossing of the slot's object in or before tick <paramref name="tick"/>, if any since it was queued.</summary>
     public bool LastFlip(int slot, long tick, out long flipTick, out bool far)
     {
-        if (_flipTick[slot] != NoFlip && _flipTick[slot] <= tick)
+        ref Flips f = ref _flips[slot];
+        if (f.Tick != NoFlip && f.Tick <= tick)
         {
-            flipTick = _flipTick[slot];
-            far = _flipFar[slot];
+            flipTick = f.Tick;
+            far = f.Far;
             return true;
         }
 
-        if (_prevFlipTick[slot] != NoFlip && _prevFlipTick[slot] <= tick)
+        if (f.PrevTick != NoFlip && f.PrevTick <= tick)
         {
-            flipTick = _prevFlipTick[slot];
-            far = _prevFlipFar[slot];
+            flipTick = f.PrevTick;
+            far = f.PrevFar;
             return true;
         }
 
@@ -240,9 +245,6 @@ internal sealed class GateQueue
         int size = _obj.Length * 2;
         Array.Resize(ref _obj, size);
         Array.Resize(ref _generation, size);
-        Array.Resize(ref _flipTick, size);
-        Array.Resize(ref _prevFlipTick, size);
-        Array.Resize(ref _flipFar, size);
-        Array.Resize(ref _prevFlipFar, size);
+        Array.Resize(ref _flips, size);
     }
 }

@@ -62,7 +62,7 @@ public sealed partial class PhysicsWorld
     public GateTracking GateTracking { get; init; } = GateTracking.Exact;
 
     /// <summary>Gate statistics since the world was created: dormant objects re-measured against the 96 m gate, crossings
-    /// handled without a visit, and crossings (or too-close calls) that woke the object.</summary>
+    /// handled without a visit, and crossings that woke the object.</summary>
     internal long GateRemeasures, GateFlips, GateWakes;
 
     /// <summary>Number of objects visited by the last tick (awake objects).</summary>
@@ -88,8 +88,9 @@ public sealed partial class PhysicsWorld
 
     internal double PingPongTime(bool visitedThisTick) => visitedThisTick ? _pingPongNow : _pingPongPrev;
 
-    /// <summary>Distances within this margin of the 96 m gate are not predicted; the object stays awake.</summary>
-    internal float GateSafetyMargin(float distance) => 1e-3f + distance * 1e-5f;
+    /// <summary>An object whose player_distance (a float) is within this of 96 m stays awake: the float may have rounded across
+    /// 96 from the double update_object compared, so its side is not known from it (an ulp at 96 is 7.6e-6).</summary>
+    internal static float GateSafetyMargin => 1e-4f;
 
     /// <summary>How far a gate margin is cut for rounding: retail's distance (float offsets, spilled sums) and the queue's
     /// double estimate differ by a few float ulps of the block-relative coordinates, far below this.</summary>
@@ -336,17 +337,25 @@ public sealed partial class PhysicsWorld
         PutIdleToSleep();
     }
 
+    /// <summary>The player's travel between two positions, for the gate odometer: never 0 when the positions differ (a move
+    /// below float rounding still re-measures objects due at the next movement).</summary>
     private static double Travel(in Position a, in Position b)
     {
         Vector3 d = a.GetOffset(b);
-        return Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y + (double)d.Z * d.Z);
+        double t = Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y + (double)d.Z * d.Z);
+        if (t == 0.0 && (a.ObjCellId != b.ObjCellId || a.Frame.Origin != b.Frame.Origin))
+        {
+            t = 1e-9;
+        }
+
+        return t;
     }
 
     /// <summary>Re-measures the dormant gated objects whose margin the player's travel may have used up, from the positions the
     /// queue holds (touching no object). An idle object that crossed the 96 m gate has the crossing recorded, and takes the state
-    /// this tick's visit leaves when next read (<see cref="PhysicsObj.Materialize"/>); an object that must move once near, one
-    /// whose crossing leaves a state no dormancy kind describes, and one too close to the boundary to call are woken and
-    /// visited later in this same tick, in order.</summary>
+    /// this tick's visit leaves when next read (<see cref="PhysicsObj.Materialize"/>); an object that must move once near and one
+    /// whose crossing leaves a state no dormancy kind describes are woken and visited later in this same tick, in order. Near
+    /// the boundary the side is decided with retail's own arithmetic, and the object is due again at the next movement.</summary>
     private void PopGateCandidates(GateQueue queue, double odometer, in Position seen)
     {
         int n = queue.Advance(odometer, seen, ref _gateDue);
@@ -373,12 +382,6 @@ public sealed partial class PhysicsWorld
                 d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
                 margin = Math.Abs(d - PhysicsGlobals.PlayerActivityDistance);
                 slack = GateKeySlack(d);
-                if (!(margin > slack))
-                {
-                    GateWakes++;
-                    WakeDormant(near);
-                    continue;
-                }
             }
 
             bool isFar = d > PhysicsGlobals.PlayerActivityDistance;
@@ -398,7 +401,8 @@ public sealed partial class PhysicsWorld
                 GateFlips++;
             }
 
-            queue.Requeue(e, margin - slack);
+            // An object within the rounding slack is due again at the player's next movement, however small.
+            queue.Requeue(e, Math.Max(0.0, margin - slack));
         }
     }
 
@@ -433,7 +437,7 @@ public sealed partial class PhysicsWorld
                     bool before = _player is not null && o.WorldIndex < _player.WorldIndex;
                     float pd = o._playerDistance;
                     (before ? _gateBefore : _gateAfter).Add(o, pd > PhysicsGlobals.PlayerActivityDistance, idle,
-                        (o._transientState & TransientState.OnWalkable) != 0, margin - GateKeySlack(pd));
+                        (o._transientState & TransientState.OnWalkable) != 0, Math.Max(0.0, margin - GateKeySlack(pd)));
                 }
             }
         }
