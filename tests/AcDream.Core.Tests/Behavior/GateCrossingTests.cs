@@ -176,6 +176,50 @@ public class GateCrossingTests
     }
 
     [Fact]
+    public void ObjectsHoveringOnTheBoundary_AreDecidedExactly()
+    {
+        // 40 resting objects at 96 m +- up to 0.8 mm (some before the player in the order, some after) while the player is placed
+        // back and forth by 0.1 to 0.4 mm a tick: sides flip again and again, often within the estimate's rounding band, where
+        // retail's own arithmetic must decide. Bit-identical to the retail walk.
+        static void Run(PhysicsWorld w, Action<int, PhysicsWorld> afterTick)
+        {
+            w.Transition = new FlatGroundTransition();
+            PhysicsObj player = SceneTestContext.Add(w, 500u, SceneTestContext.At(96f, 96f));
+            player.SetState(player.State & ~PhysicsState.Gravity);
+            player.CalcAcceleration();
+            for (int k = 0; k < 40; k++)
+            {
+                double a = k * Math.PI / 20.0;
+                double r = 96.0 + (k % 9 - 4) * 0.0002;
+                uint id = k % 2 == 0 ? 100u + (uint)k : 1000u + (uint)k;
+                SceneTestContext.Add(w, id, SceneTestContext.At(96f + (float)(r * Math.Cos(a)), 96f + (float)(r * Math.Sin(a))));
+            }
+
+            w.Player = player;
+            double t = w.CurrentTime;
+            for (int tick = 1; tick <= 300; tick++)
+            {
+                // The client places the player (retail ignores velocities this small): 0.1 to 0.4 mm a tick.
+                float step = (tick / 3 % 2 == 0 ? 1f : -1f) * ((tick / 50 % 2 == 0) ? 0.0004f : 0.0001f);
+                Position p = player.Position;
+                p.Frame.Origin += new Vector3(step, 0.6f * step, 0f);
+                Assert.Equal(SetPositionError.Ok, player.SetPositionSimple(p, sliding: false));
+                t += 1.0 / 30.0;
+                w.Tick(t);
+                afterTick(tick, w);
+            }
+        }
+
+        var full = new PhysicsWorld(10.0) { VisitEveryObject = true };
+        var hashes = new ulong[301];
+        Run(full, (tick, w) => hashes[tick] = SceneTestContext.HashWorld(w));
+        var scene = new PhysicsWorld(10.0);
+        Run(scene, (tick, w) => Assert.True(hashes[tick] == SceneTestContext.HashWorld(w), $"tick {tick}"));
+        Assert.True(scene.GateFlips > 20, $"flips {scene.GateFlips} remeasures {scene.GateRemeasures} wakes {scene.GateWakes} dormant {scene.DormantCount}");
+        Assert.True(scene.DormantCount >= 35, $"dormant {scene.DormantCount}");
+    }
+
+    [Fact]
     public void StillPlayer_ReMeasuresNothing()
     {
         var w = new PhysicsWorld(50.0);
