@@ -36,7 +36,7 @@ public class GateWheelTests
                 };
                 int id = nextId++;
                 pending[id] = clock + margin;
-                wheel.Push(new GateEntry { Key = clock + margin, X = id });
+                wheel.Push(new GateEntry { X = id }, clock + margin);
             }
 
             // Advance: usually a walking step, sometimes standing still, now and then a teleport of kilometres.
@@ -73,7 +73,7 @@ public class GateWheelTests
         double clock = 0.0;
         for (int i = 0; i < 5000; i++)
         {
-            wheel.Push(new GateEntry { Key = rng.NextDouble() * 50.0, X = i });
+            wheel.Push(new GateEntry { X = i }, rng.NextDouble() * 50.0);
         }
 
         void Run(int steps)
@@ -84,9 +84,7 @@ public class GateWheelTests
                 int n = wheel.PopDue(clock, ref due, 0);
                 for (int i = 0; i < n; i++)
                 {
-                    GateEntry e = due[i];
-                    e.Key = clock + 0.05 + (e.X * 7919 % 5000) * 0.01; // 0.05 .. 50 m ahead
-                    wheel.Push(e);
+                    wheel.Push(due[i], clock + 0.05 + (due[i].X * 7919 % 5000) * 0.01); // 0.05 .. 50 m ahead
                 }
             }
         }

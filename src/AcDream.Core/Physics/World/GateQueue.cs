@@ -168,18 +168,16 @@ internal sealed class GateQueue
     }
 
     /// <summary>Puts a popped entry back, re-measured with <paramref name="margin"/> against this tick's seen position.</summary>
-    public void Requeue(GateEntry e, double margin)
+    public void Requeue(in GateEntry e, double margin)
     {
         if (margin < Split)
         {
-            e.Key = _odometer + margin;
-            _odometerWheel.Push(e);
+            _odometerWheel.Push(e, _odometer + margin);
         }
         else
         {
             // Displacement since now <= (anchor total then - now) + the player's distance from the anchor then + now.
-            e.Key = _anchorTotal + margin - _fromAnchor;
-            _anchorWheel.Push(e);
+            _anchorWheel.Push(e, _anchorTotal + margin - _fromAnchor);
         }
     }
 

@@ -52,10 +52,12 @@ internal sealed class GateWheel
     /// <summary>Entries held, stale ones included.</summary>
     public int Count { get; private set; }
 
-    /// <summary>Adds an entry due when the clock reaches <see cref="GateEntry.Key"/>.</summary>
-    public void Push(in GateEntry e)
+    /// <summary>Adds an entry due when the clock reaches <paramref name="key"/> (stored as its <see cref="GateEntry.Key"/>).</summary>
+    /// <remarks>The key comes apart from the entry so that no caller writes one field of an entry just before it is copied whole
+    /// (a store-forwarding stall).</remarks>
+    public void Push(in GateEntry e, double key)
     {
-        Append(BucketFor(e.Key), e);
+        Append(BucketFor(key), e, key);
         Count++;
     }
 
@@ -117,7 +119,7 @@ internal sealed class GateWheel
                 {
                     if (_owner.IsLive(_pool[k]))
                     {
-                        Append(b, _pool[k]);
+                        Append(b, _pool[k], _pool[k].Key);
                     }
                     else
                     {
@@ -133,9 +135,10 @@ internal sealed class GateWheel
         }
     }
 
-    // The near-bucket index of a clock reading (floor; readings are never negative). The platform's native conversion: .NET's
-    // saturating (long) cast costs a helper call here, and readings stay far inside the range where the two agree.
-    private static long Index(double reading) => double.ConvertToIntegerNative<long>(Math.Floor(reading * NearScale));
+    // The near-bucket index of a clock reading: floor, which truncation is for the non-negative readings the gate uses. The
+    // platform's native conversion: .NET's saturating (long) cast costs a helper call here, and readings stay far inside the
+    // range where the two agree.
+    private static long Index(double reading) => double.ConvertToIntegerNative<long>(Math.Max(0.0, reading * NearScale));
 
     private static int NearSlot(long index) => (int)(index & (NearBuckets - 1));
 
@@ -158,7 +161,7 @@ internal sealed class GateWheel
         return f < _farNext + FarBuckets ? FarSlot(f) : Overflow;
     }
 
-    private void Append(int bucket, in GateEntry e)
+    private void Append(int bucket, in GateEntry e, double key)
     {
         int t = _tail[bucket];
         if (t < 0 || _chunkCount[t] == ChunkSize)
@@ -177,7 +180,9 @@ internal sealed class GateWheel
             t = c;
         }
 
-        _pool[t * ChunkSize + _chunkCount[t]++] = e;
+        ref GateEntry slot = ref _pool[t * ChunkSize + _chunkCount[t]++];
+        slot = e;
+        slot.Key = key;
         if (bucket < NearBuckets)
         {
             _nearEntries++;
@@ -258,7 +263,7 @@ internal sealed class GateWheel
                 }
                 else
                 {
-                    Append(bucket, _pool[k]); // into a fresh chunk: this one is still being read
+                    Append(bucket, _pool[k], _pool[k].Key); // into a fresh chunk: this one is still being read
                 }
             }
 
@@ -297,7 +302,7 @@ internal sealed class GateWheel
                 }
                 else
                 {
-                    Append(BucketFor(_pool[k].Key), _pool[k]); // possibly this bucket again (overflow): a fresh chunk
+                    Append(BucketFor(_pool[k].Key), _pool[k], _pool[k].Key); // possibly this bucket again (overflow): a fresh chunk
                 }
             }
 
