@@ -154,6 +154,8 @@ public class GateCrossingTests
 
         // The scene really did the crossings without visits: hundreds of crossings, few wakes, far fewer visits than 578 x 480.
         Assert.True(scene.GateFlips > 300, $"flips {scene.GateFlips}");
+        Assert.Equal(new GateStatistics(scene.GateRemeasures, scene.GateFlips, scene.GateWakes), scene.GateStatistics);
+        Assert.Equal(new GateStatistics(0, 0, 0), full.GateStatistics); // visiting every object tracks nothing
         Assert.True(scene.GateWakes < scene.GateFlips / 4, $"wakes {scene.GateWakes}, flips {scene.GateFlips}");
         Assert.True(visits < 578 * 480 / 4, $"visits {visits}");
     }

@@ -65,6 +65,10 @@ public sealed partial class PhysicsWorld
     /// handled without a visit, and crossings that woke the object.</summary>
     internal long GateRemeasures, GateFlips, GateWakes;
 
+    /// <summary>What the 96 m gate tracking has done since the world was created (re-measurements, crossings applied without a
+    /// visit, crossings that woke their object).</summary>
+    public GateStatistics GateStatistics => new(GateRemeasures, GateFlips, GateWakes);
+
     /// <summary>Number of objects visited by the last tick (awake objects).</summary>
     public int LastTickVisitCount { get; private set; }
 
