@@ -35,9 +35,18 @@ internal struct GateEntry
     /// so differences of these agree with <c>Position::get_offset</c> to float rounding.</summary>
     public readonly void Global(out double x, out double y, out double z)
     {
-        x = BlockX * 192.0 + X;
-        y = BlockY * 192.0 + Y;
+        x = BlockX * (double)LandDefs.BlockLength + X;
+        y = BlockY * (double)LandDefs.BlockLength + Y;
         z = Z;
+    }
+
+    /// <summary>A position's global x, y, z, in the same frame as the entries'.</summary>
+    public static void Global(in Position p, out double x, out double y, out double z)
+    {
+        uint cell = p.ObjCellId;
+        x = ((cell >> 24) & 0xFF) * (double)LandDefs.BlockLength + p.Frame.Origin.X;
+        y = ((cell >> 16) & 0xFF) * (double)LandDefs.BlockLength + p.Frame.Origin.Y;
+        z = p.Frame.Origin.Z;
     }
 }
 

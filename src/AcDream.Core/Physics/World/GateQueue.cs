@@ -62,10 +62,7 @@ internal sealed class GateQueue
         _anchorWheel = new GateWheel(this);
     }
 
-    /// <summary>Number of objects queued.</summary>
-    public int Live => _slotCount - _freeCount;
-
-    /// <summary>Entries held, stale ones included (at most about twice <see cref="Live"/> plus a constant).</summary>
+    /// <summary>Entries held, stale ones included (at most about twice the queued objects plus a constant).</summary>
     public int EntryCount => _odometerWheel.Count + _anchorWheel.Count;
 
     /// <summary>The seen player position of this tick (global), as passed to <see cref="Advance"/>.</summary>
@@ -91,10 +88,7 @@ internal sealed class GateQueue
     public int Advance(double odometer, in Position seen, ref GateEntry[] due)
     {
         _odometer = odometer;
-        uint cell = seen.ObjCellId;
-        _seenX = ((cell >> 24) & 0xFF) * 192.0 + seen.Frame.Origin.X;
-        _seenY = ((cell >> 16) & 0xFF) * 192.0 + seen.Frame.Origin.Y;
-        _seenZ = seen.Frame.Origin.Z;
+        GateEntry.Global(seen, out _seenX, out _seenY, out _seenZ);
         if (!_hasAnchor)
         {
             SetAnchor();

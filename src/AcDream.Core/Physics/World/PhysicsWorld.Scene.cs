@@ -83,7 +83,7 @@ public sealed partial class PhysicsWorld
     // Whether this tick's retail visit of an idle object that crosses the gate leaves a state a dormancy kind describes: beyond
     // 96 m its update_time must come out as the world's consumed clock from any update_time an idle object can hold (the tick
     // time, the ping-pong time or the consumed clock of the tick before); within, one off walkable ground keeps ACTIVE and
-    // update_time = now, which must be the consumed clock. Both hold but after stalls that leave time unconsumed.
+    // update_time = now, which must be the consumed clock. Both hold except after stalls that leave time unconsumed.
     private bool _flipToFarOk, _flipToNearOk;
 
     internal double ConsumedClockPrev => _consumedPrev;
