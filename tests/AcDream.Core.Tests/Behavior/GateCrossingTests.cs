@@ -222,6 +222,68 @@ public class GateCrossingTests
     }
 
     [Fact]
+    public void PlayerChangedInTheMiddleOfATick_IsBitIdenticalToVisitingEveryObject()
+    {
+        // The client switches the player from inside the tick: once from the player listener (after the old player's update),
+        // once from a step of another object. Objects visited later in that tick measure against the new player, as retail's do.
+        static void Run(PhysicsWorld w, Action<int, PhysicsWorld> afterTick)
+        {
+            w.Transition = new FlatGroundTransition();
+            PhysicsObj a = SceneTestContext.Add(w, 500u, SceneTestContext.At(96f, 96f));
+            PhysicsObj b = SceneTestContext.Add(w, 20u, SceneTestContext.At(150f, 40f));
+            PhysicsObj stepper = SceneTestContext.Add(w, 300u, SceneTestContext.At(100f, 100f));
+            stepper.GetMinterp(); // never sleeps: its steps drive the second switch
+            for (int k = 0; k < 400; k++)
+            {
+                uint id = 100u + 3u * (uint)k; // 100..1297: before and after both players in the order
+                SceneTestContext.Add(w, id, SceneTestContext.At(-30f + (k % 20) * 13f, -30f + (k / 20) * 13f), spheres: k % 3 == 0 ? 0 : 1);
+            }
+
+            var switcher = new Switcher(w, a, b);
+            w.PlayerListener = switcher;
+            w.StepObserver = switcher;
+            w.Player = a;
+            double t = w.CurrentTime;
+            for (int tick = 1; tick <= 200; tick++)
+            {
+                switcher.Tick = tick;
+                a.SetVelocity(new Vector3(4f, 1f, 0f));
+                t += 1.0 / 30.0;
+                w.Tick(t);
+                afterTick(tick, w);
+            }
+        }
+
+        var full = new PhysicsWorld(20.0) { VisitEveryObject = true };
+        var hashes = new ulong[201];
+        Run(full, (tick, w) => hashes[tick] = SceneTestContext.HashWorld(w));
+        var scene = new PhysicsWorld(20.0);
+        Run(scene, (tick, w) => Assert.True(hashes[tick] == SceneTestContext.HashWorld(w), $"tick {tick}"));
+        Assert.True(scene.DormantCount > 200, $"dormant {scene.DormantCount}");
+    }
+
+    private sealed class Switcher(PhysicsWorld world, PhysicsObj a, PhysicsObj b) : IPlayerPhysicsListener, IStepObserver
+    {
+        public int Tick { get; set; }
+
+        public void PlayerPhysicsUpdated(PhysicsObj player)
+        {
+            if (Tick == 60)
+            {
+                world.Player = b;
+            }
+        }
+
+        public void OnStep(PhysicsObj obj, float quantum, double physicsTime)
+        {
+            if (Tick == 130 && obj.Id == 300u && world.Player == b)
+            {
+                world.Player = a;
+            }
+        }
+    }
+
+    [Fact]
     public void StillPlayer_ReMeasuresNothing()
     {
         var w = new PhysicsWorld(50.0);
