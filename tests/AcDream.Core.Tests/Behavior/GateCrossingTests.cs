@@ -284,6 +284,39 @@ public class GateCrossingTests
     }
 
     [Fact]
+    public void ObjectsWokenAgainAndAgain_LeaveABoundedQueue()
+    {
+        // Objects kicked awake every few ticks leave stale entries behind in the gate queues each time they fall asleep again;
+        // the queues drop them (when met, or by compaction once they outnumber the live ones), so a long walk keeps them bounded.
+        var w = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        PhysicsObj player = SceneTestContext.Add(w, 1u, SceneTestContext.At(96f, 96f));
+        var items = new PhysicsObj[600];
+        for (int k = 0; k < items.Length; k++)
+        {
+            items[k] = SceneTestContext.Add(w, 100u + (uint)k, SceneTestContext.At(-20f + (k % 30) * 8f, -20f + (k / 30) * 8f));
+        }
+
+        w.Player = player;
+        double t = 0.0;
+        int maxEntries = 0;
+        for (int tick = 1; tick <= 3000; tick++)
+        {
+            float h = (tick / 40 % 4) * MathF.PI / 2f;
+            player.SetVelocity(new Vector3(3f * MathF.Sin(h), 3f * MathF.Cos(h), 0f));
+            items[tick * 7 % items.Length].SetVelocity(new Vector3(0.6f, 0f, 0f)); // wakes; it slides to rest and sleeps again
+            t += 1.0 / 30.0;
+            w.Tick(t);
+            if (tick > 100)
+            {
+                maxEntries = Math.Max(maxEntries, w.GateEntryCount);
+            }
+        }
+
+        Assert.True(w.DormantCount > 500, $"dormant {w.DormantCount}");
+        Assert.True(maxEntries <= 2 * items.Length + 1100, $"entries up to {maxEntries} for {items.Length} objects");
+    }
+
+    [Fact]
     public void StillPlayer_ReMeasuresNothing()
     {
         var w = new PhysicsWorld(50.0);

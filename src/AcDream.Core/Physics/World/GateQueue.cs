@@ -16,8 +16,10 @@ namespace AcDream.Core.Physics;
 /// objects; on a straight walk both clocks advance alike.</para>
 /// <para>Entries carry what a re-measurement needs, so re-measuring reads no object. A crossing by an idle object is recorded in
 /// the slot (<see cref="RecordFlip"/>) and applied when the object is next read; only objects that must move are woken.</para>
-/// <para>Slots carry a generation: <see cref="Forget"/> bumps it and the entry, now stale, is dropped when met, or by a compaction
-/// once stale entries outnumber live ones, so memory stays bounded by the live count and, once grown, never allocates.</para>
+/// <para>Slots carry a generation: <see cref="Forget"/> bumps it and the entry, now stale, is dropped when the caller would act on
+/// its object (<see cref="Keep"/>), when the far level cascades, or by a compaction once stale entries outnumber live ones; a
+/// stale entry that never crosses just goes round until then (cheaper than reading a slot for every pop). Memory stays bounded
+/// by about twice the live count and, once grown, never allocates.</para>
 /// </remarks>
 internal sealed class GateQueue
 {
@@ -79,6 +81,19 @@ internal sealed class GateQueue
     internal bool IsLive(in GateEntry e) => _generation[e.Slot] == e.Generation;
 
     internal void StaleDropped() => _stale--;
+
+    /// <summary>True when a popped entry still belongs to its slot's object; a stale one is counted as dropped (the caller
+    /// discards it).</summary>
+    public bool Keep(in GateEntry e)
+    {
+        if (_generation[e.Slot] == e.Generation)
+        {
+            return true;
+        }
+
+        _stale--;
+        return false;
+    }
 
     /// <summary>
     /// Starts this tick for the queue: the odometer reading and the player position the queue's objects see, then pops the live

@@ -7,8 +7,8 @@ namespace AcDream.Core.Physics;
 /// the clock reaches their key. Two levels — <see cref="NearBuckets"/> buckets of <see cref="NearWidth"/> m, then
 /// <see cref="FarBuckets"/> buckets of <see cref="NearBuckets"/> × <see cref="NearWidth"/> m — and an overflow bucket. Buckets are
 /// lists of fixed-size chunks from one pool, so draining reads memory in order; every push, pop and cascade is O(1). An entry
-/// may come out up to one near bucket early, which is always safe for the gate (an early re-measurement only re-queues).
-/// Stale entries (see <see cref="GateQueue"/>) are dropped as they are met.
+/// comes out once the clock reaches its key (never late). Stale entries (see <see cref="GateQueue"/>) are dropped when the
+/// far level cascades and when the wheel is compacted; popped ones are checked by the caller.
 /// </summary>
 internal sealed class GateWheel
 {
@@ -237,7 +237,8 @@ internal sealed class GateWheel
         _freeChunk = c;
     }
 
-    /// <summary>Pops a bucket's live entries due at <paramref name="clock"/>; the others stay (stale ones are dropped).</summary>
+    /// <summary>Pops a bucket's entries due at <paramref name="clock"/>; the others stay. Liveness is not checked here (that
+    /// would read a slot per entry): the caller checks it before acting on an entry's object.</summary>
     private int Drain(int bucket, double clock, ref GateEntry[] due, int n)
     {
         int c = Detach(bucket);
@@ -246,12 +247,7 @@ internal sealed class GateWheel
             int start = c * ChunkSize, end = start + _chunkCount[c];
             for (int k = start; k < end; k++)
             {
-                if (!_owner.IsLive(_pool[k]))
-                {
-                    Count--;
-                    _owner.StaleDropped();
-                }
-                else if (_pool[k].Key <= clock)
+                if (_pool[k].Key <= clock)
                 {
                     Count--;
                     if (n == due.Length)

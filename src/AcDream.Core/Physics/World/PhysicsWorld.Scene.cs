@@ -77,6 +77,9 @@ public sealed partial class PhysicsWorld
 
     internal double ConsumedClockNow => _consumedNow;
 
+    /// <summary>Entries the gate queues hold, stale ones included (bounded by about twice the queued objects plus a constant).</summary>
+    internal int GateEntryCount => _gateBefore.EntryCount + _gateAfter.EntryCount;
+
     /// <summary>Number of scene ticks so far (the tick in progress during a tick).</summary>
     internal long SceneTick => _tick;
 
@@ -381,6 +384,11 @@ public sealed partial class PhysicsWorld
             if (!(margin > 2.0 * slack))
             {
                 // Near the boundary: decide with retail's own arithmetic (update_object's get_offset and double sqrt).
+                if (!queue.Keep(e))
+                {
+                    continue; // the object was woken or removed since: the entry is stale
+                }
+
                 PhysicsObj near = queue.Object(e);
                 Vector3 pv = seen.GetOffset(near._position);
                 d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
@@ -391,6 +399,11 @@ public sealed partial class PhysicsWorld
             bool isFar = d > PhysicsGlobals.PlayerActivityDistance;
             if (isFar != e.Far)
             {
+                if (!queue.Keep(e))
+                {
+                    continue;
+                }
+
                 bool describable = (e.Flags & GateFlags.Idle) != 0
                     && (isFar ? _flipToFarOk : (e.Flags & GateFlags.OnWalkable) != 0 || _flipToNearOk);
                 if (!describable)
@@ -405,7 +418,8 @@ public sealed partial class PhysicsWorld
                 GateFlips++;
             }
 
-            // An object within the rounding slack is due again at the player's next movement, however small.
+            // An object within the rounding slack is due again at the player's next movement, however small. (A stale entry
+            // that did not cross goes round again until a compaction drops it: harmless, and it saves reading a slot per pop.)
             queue.Requeue(e, Math.Max(0.0, margin - slack));
         }
     }
