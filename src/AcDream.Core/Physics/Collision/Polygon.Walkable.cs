@@ -16,20 +16,13 @@ public sealed partial class Polygon
     // retail: CPolygon::check_walkable (acclient.c:360226)
     public bool CheckWalkable(in Sphere sphere, Vector3 up)
     {
-        Vector3 n = Plane.N;
-        double angleUp = (double)n.Y * up.Y + (double)n.Z * up.Z + (double)up.X * n.X;
-        if (Math.Abs(angleUp) < PhysicsGlobals.Epsilon)
+        if (!DropOntoPlane(sphere.Center, up, out Vector3 dropped))
         {
             return false;
         }
 
-        Vector3 c = sphere.Center;
-        double t = ((double)n.Z * c.Z + (double)n.Y * c.Y + (double)c.X * n.X + Plane.D) / angleUp;
-        float ty = (float)(t * up.Y);
-        float tz = (float)(t * up.Z);
-        float cx = (float)(c.X - t * up.X);
-        float cy = c.Y - ty;
-        float cz = c.Z - tz;
+        Vector3 n = Plane.N;
+        float cx = dropped.X, cy = dropped.Y, cz = dropped.Z;
         float inside = sphere.Radius * sphere.Radius;
         ReadOnlySpan<Vector3> v = Vertices;
         int last = v.Length - 1;
@@ -70,20 +63,13 @@ public sealed partial class Polygon
     public bool FindCrossedEdge(in Sphere sphere, Vector3 up, out Vector3 normal)
     {
         normal = Vector3.Zero;
-        Vector3 n = Plane.N;
-        double angleUp = (double)n.Y * up.Y + (double)n.Z * up.Z + (double)n.X * up.X;
-        if (Math.Abs(angleUp) < PhysicsGlobals.Epsilon)
+        if (!DropOntoPlane(sphere.Center, up, out Vector3 dropped))
         {
             return false;
         }
 
-        Vector3 c = sphere.Center;
-        double t = ((double)n.Z * c.Z + (double)n.Y * c.Y + (double)n.X * c.X + Plane.D) / angleUp;
-        float ty = (float)(t * up.Y);
-        float tz = (float)(t * up.Z);
-        float cx = (float)(c.X - t * up.X);
-        float cy = c.Y - ty;
-        float cz = c.Z - tz;
+        Vector3 n = Plane.N;
+        float cx = dropped.X, cy = dropped.Y, cz = dropped.Z;
         ReadOnlySpan<Vector3> v = Vertices;
         int last = v.Length - 1;
         for (int i = 0; i < v.Length; i++)
@@ -109,5 +95,25 @@ public sealed partial class Polygon
         }
 
         return false;
+    }
+
+    // A sphere centre dropped along up onto the plane, as check_walkable, check_small_walkable and find_crossed_edge each do
+    // (acclient.c:360226, 360311, 360396): the parameter in double, x subtracted in double, y and z through float products.
+    // False when up runs along the plane (|N . up| < EPSILON).
+    private bool DropOntoPlane(Vector3 c, Vector3 up, out Vector3 dropped)
+    {
+        Vector3 n = Plane.N;
+        double angleUp = (double)n.Y * up.Y + (double)n.Z * up.Z + (double)n.X * up.X;
+        if (Math.Abs(angleUp) < PhysicsGlobals.Epsilon)
+        {
+            dropped = default;
+            return false;
+        }
+
+        double t = ((double)n.Z * c.Z + (double)n.Y * c.Y + (double)n.X * c.X + Plane.D) / angleUp;
+        float ty = (float)(t * up.Y);
+        float tz = (float)(t * up.Z);
+        dropped = new Vector3((float)(c.X - t * up.X), c.Y - ty, c.Z - tz);
+        return true;
     }
 }

@@ -95,21 +95,14 @@ public sealed partial class BspTree
             return false;
         }
 
-        if (!n.Sphere.Intersects(checkPos))
+        switch (Descend(n, checkPos, checkPos.Radius, out _))
         {
-            return false;
-        }
-
-        double dist = n.SplittingPlane.DotProduct(checkPos.Center);
-        double r = checkPos.Radius - (double)PhysicsGlobals.Epsilon;
-        if (dist >= r)
-        {
-            return SphereIntersectsPoly(n.PosNode, checkPos, movement, ref hitPoly, ref contactPoint);
-        }
-
-        if (dist <= -r)
-        {
-            return SphereIntersectsPoly(n.NegNode, checkPos, movement, ref hitPoly, ref contactPoint);
+            case Side.Miss:
+                return false;
+            case Side.Pos:
+                return SphereIntersectsPoly(n.PosNode, checkPos, movement, ref hitPoly, ref contactPoint);
+            case Side.Neg:
+                return SphereIntersectsPoly(n.NegNode, checkPos, movement, ref hitPoly, ref contactPoint);
         }
 
         return SphereIntersectsPoly(n.PosNode, checkPos, movement, ref hitPoly, ref contactPoint)
@@ -152,21 +145,14 @@ public sealed partial class BspTree
             return false;
         }
 
-        if (!n.Sphere.Intersects(checkPos))
+        switch (Descend(n, checkPos, checkPos.Radius, out double dist))
         {
-            return false;
-        }
-
-        double dist = n.SplittingPlane.DotProduct(checkPos.Center);
-        double r = checkPos.Radius - (double)PhysicsGlobals.Epsilon;
-        if (dist >= r)
-        {
-            return SphereIntersectsSolid(n.PosNode, checkPos, centerCheck);
-        }
-
-        if (dist <= -r)
-        {
-            return SphereIntersectsSolid(n.NegNode, checkPos, centerCheck);
+            case Side.Miss:
+                return false;
+            case Side.Pos:
+                return SphereIntersectsSolid(n.PosNode, checkPos, centerCheck);
+            case Side.Neg:
+                return SphereIntersectsSolid(n.NegNode, checkPos, centerCheck);
         }
 
         // Straddling: the centre test applies only on the side the centre is on.
@@ -214,21 +200,14 @@ public sealed partial class BspTree
             return centerSolid;
         }
 
-        if (!n.Sphere.Intersects(checkPos))
+        switch (Descend(n, checkPos, radius, out double dist))
         {
-            return false;
-        }
-
-        double dist = n.SplittingPlane.DotProduct(checkPos.Center);
-        double r = radius - (double)PhysicsGlobals.Epsilon;
-        if (dist >= r)
-        {
-            return SphereIntersectsSolidPoly(n.PosNode, checkPos, radius, ref centerSolid, ref hitPoly, centerCheck);
-        }
-
-        if (dist <= -r)
-        {
-            return SphereIntersectsSolidPoly(n.NegNode, checkPos, radius, ref centerSolid, ref hitPoly, centerCheck);
+            case Side.Miss:
+                return false;
+            case Side.Pos:
+                return SphereIntersectsSolidPoly(n.PosNode, checkPos, radius, ref centerSolid, ref hitPoly, centerCheck);
+            case Side.Neg:
+                return SphereIntersectsSolidPoly(n.NegNode, checkPos, radius, ref centerSolid, ref hitPoly, centerCheck);
         }
 
         if (dist < 0.0)
@@ -278,21 +257,14 @@ public sealed partial class BspTree
             return false;
         }
 
-        if (!n.Sphere.Intersects(validPos))
+        switch (Descend(n, validPos, validPos.Radius, out _))
         {
-            return false;
-        }
-
-        double dist = n.SplittingPlane.DotProduct(validPos.Center);
-        double r = validPos.Radius - (double)PhysicsGlobals.Epsilon;
-        if (dist >= r)
-        {
-            return HitsWalkable(n.PosNode, path, validPos, up);
-        }
-
-        if (dist <= -r)
-        {
-            return HitsWalkable(n.NegNode, path, validPos, up);
+            case Side.Miss:
+                return false;
+            case Side.Pos:
+                return HitsWalkable(n.PosNode, path, validPos, up);
+            case Side.Neg:
+                return HitsWalkable(n.NegNode, path, validPos, up);
         }
 
         return HitsWalkable(n.PosNode, path, validPos, up) || HitsWalkable(n.NegNode, path, validPos, up);
@@ -326,26 +298,48 @@ public sealed partial class BspTree
             return;
         }
 
-        if (!n.Sphere.Intersects(validPos))
+        switch (Descend(n, validPos, validPos.Radius, out _))
         {
-            return;
-        }
-
-        double dist = n.SplittingPlane.DotProduct(validPos.Center);
-        double r = validPos.Radius - (double)PhysicsGlobals.Epsilon;
-        if (dist >= r)
-        {
-            FindWalkable(n.PosNode, path, ref validPos, ref polygon, movement, up, ref changed);
-            return;
-        }
-
-        if (dist <= -r)
-        {
-            FindWalkable(n.NegNode, path, ref validPos, ref polygon, movement, up, ref changed);
-            return;
+            case Side.Miss:
+                return;
+            case Side.Pos:
+                FindWalkable(n.PosNode, path, ref validPos, ref polygon, movement, up, ref changed);
+                return;
+            case Side.Neg:
+                FindWalkable(n.NegNode, path, ref validPos, ref polygon, movement, up, ref changed);
+                return;
         }
 
         FindWalkable(n.PosNode, path, ref validPos, ref polygon, movement, up, ref changed);
         FindWalkable(n.NegNode, path, ref validPos, ref polygon, movement, up, ref changed);
+    }
+
+    private enum Side : byte
+    {
+        Miss,
+        Pos,
+        Neg,
+        Both,
+    }
+
+    // The split node's step shared by the sphere queries: a sphere missing the node's bounding sphere goes nowhere; otherwise
+    // the positive child when the centre is at least radius - EPSILON in front of the plane, the negative child when that far
+    // behind, both otherwise. dist receives the centre's plane distance (0 on a miss).
+    private static Side Descend(in BspNode n, in Sphere sphere, float radius, out double dist)
+    {
+        dist = 0.0;
+        if (!n.Sphere.Intersects(sphere))
+        {
+            return Side.Miss;
+        }
+
+        dist = n.SplittingPlane.DotProduct(sphere.Center);
+        double r = radius - (double)PhysicsGlobals.Epsilon;
+        if (dist >= r)
+        {
+            return Side.Pos;
+        }
+
+        return dist <= -r ? Side.Neg : Side.Both;
     }
 }

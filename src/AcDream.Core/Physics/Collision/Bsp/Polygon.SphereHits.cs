@@ -34,37 +34,7 @@ public sealed partial class Polygon
 
         contactPoint = Project(sphere.Center, dist);
         float radsq = (float)(r * r - dist * dist);
-        bool inside = true;
-        Vector3[] v = _vertices;
-        Vector3 prev = v[v.Length - 1];
-        for (int i = 0; i < v.Length; i++)
-        {
-            Vector3 cur = v[i];
-            EdgeTest t = TestEdge(prev, cur, contactPoint, radsq);
-            if (t == EdgeTest.Miss)
-            {
-                return false;
-            }
-
-            if (t == EdgeTest.Hit)
-            {
-                return true;
-            }
-
-            if (t == EdgeTest.OutsideNear)
-            {
-                inside = false;
-            }
-
-            if (VertexWithin(prev, contactPoint, radsq))
-            {
-                return true;
-            }
-
-            prev = cur;
-        }
-
-        return inside;
+        return DiscTouches(contactPoint, radsq);
     }
 
     /// <summary>
@@ -161,49 +131,13 @@ public sealed partial class Polygon
     // retail: CPolygon::check_small_walkable (acclient.c:360311)
     public bool CheckSmallWalkable(in Sphere sphere, Vector3 up)
     {
-        double angleUp = Plane.N.Y * (double)up.Y + Plane.N.Z * (double)up.Z + up.X * (double)Plane.N.X;
-        if (Math.Abs(angleUp) < PhysicsGlobals.Epsilon)
+        if (!DropOntoPlane(sphere.Center, up, out Vector3 center))
         {
             return false;
         }
 
-        Vector3 c = sphere.Center;
-        double t = ((double)Plane.N.Z * c.Z + (double)Plane.N.Y * c.Y + c.X * (double)Plane.N.X + Plane.D) / angleUp;
-        float ty = (float)(t * up.Y);
-        float tz = (float)(t * up.Z);
-        var center = new Vector3((float)(c.X - t * up.X), c.Y - ty, c.Z - tz);
         float inside = (float)((double)sphere.Radius * sphere.Radius * 0.25);
-        bool within = true;
-        Vector3[] v = _vertices;
-        Vector3 prev = v[v.Length - 1];
-        for (int i = 0; i < v.Length; i++)
-        {
-            Vector3 cur = v[i];
-            EdgeTest e = TestEdge(prev, cur, center, inside);
-            if (e == EdgeTest.Miss)
-            {
-                return false;
-            }
-
-            if (e == EdgeTest.Hit)
-            {
-                return true;
-            }
-
-            if (e == EdgeTest.OutsideNear)
-            {
-                within = false;
-            }
-
-            if (VertexWithin(prev, center, inside))
-            {
-                return true;
-            }
-
-            prev = cur;
-        }
-
-        return within;
+        return DiscTouches(center, inside);
     }
 
     /// <summary>True when <paramref name="point"/> (in the plane) is inside every edge.</summary>
@@ -356,6 +290,39 @@ public sealed partial class Polygon
         float y = (float)(c.Y - dist * Plane.N.Y);
         float z = (float)(c.Z - (double)pz);
         return new Vector3(x, y, z);
+    }
+
+    // The edge walk shared by polygon_hits_sphere and check_small_walkable: a disc of squared radius radsq around a point in the
+    // polygon's plane touches the polygon when it is inside every edge, or reaches an edge segment or a vertex; an edge it is
+    // outside of by more than the radius ends the walk with a miss.
+    private bool DiscTouches(Vector3 point, float radsq)
+    {
+        bool inside = true;
+        Vector3[] v = _vertices;
+        Vector3 prev = v[v.Length - 1];
+        for (int i = 0; i < v.Length; i++)
+        {
+            Vector3 cur = v[i];
+            EdgeTest t = TestEdge(prev, cur, point, radsq);
+            if (t == EdgeTest.Miss)
+            {
+                return false;
+            }
+
+            if (t == EdgeTest.Hit || VertexWithin(prev, point, radsq))
+            {
+                return true;
+            }
+
+            if (t == EdgeTest.OutsideNear)
+            {
+                inside = false;
+            }
+
+            prev = cur;
+        }
+
+        return inside;
     }
 
     // One edge of the polygon_hits_sphere family: Inside (cross >= 0), Miss (outside by more than the radius, BSP-B1),
