@@ -5,7 +5,8 @@ namespace AcDream.Core.Benchmarks;
 
 /// <summary>
 /// Entry point. <c>report</c> runs the accuracy-versus-cost report (add <c>--quick</c> for a short CI run that writes nothing);
-/// <c>replay</c> writes the interpolation replay figures (docs/interpolation-replay.md and .svg);
+/// <c>replay</c> writes the interpolation replay figures (docs/interpolation-replay.md and .svg); <c>scene-ab</c> compares a
+/// world tick with and without 100,000 resting objects in one process (see <see cref="Report.SceneAbReport"/>);
 /// anything else goes to BenchmarkDotNet's switcher (e.g. <c>--filter '*'</c>, <c>--job Dry</c>).
 /// </summary>
 public static class Program
@@ -21,6 +22,11 @@ public static class Program
         if (args.Length > 0 && string.Equals(args[0], "replay", StringComparison.OrdinalIgnoreCase))
         {
             return Report.ReplayReport.Run(args.AsSpan(1));
+        }
+
+        if (args.Length > 0 && string.Equals(args[0], "scene-ab", StringComparison.OrdinalIgnoreCase))
+        {
+            return Report.SceneAbReport.Run(args.AsSpan(1));
         }
 
         BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);

@@ -6,12 +6,12 @@ using BenchmarkDotNet.Attributes;
 namespace AcDream.Core.Benchmarks;
 
 /// <summary>
-/// A scene pays only for what moves: one world tick with 100 creatures (one of them the player, walking or standing still; the
-/// other 99 walking) among 0, 10,000 or
-/// 100,000 resting or static objects (half resting items, half static scenery, on a 1.44 m grid over a 576 x 360 m area around
-/// the player). The resting objects are dormant and never visited; the only per-tick cost they add is the exact 96 m gate:
-/// dormant objects within a few metres of the walking player's 96 m circle are re-measured from their gate-queue entries, and
-/// those it passes over change side without a visit. Mean per world tick.
+/// A scene pays only for what moves: one world tick with 100 creatures (one of them the player; the other 99 walking 2 m squares)
+/// among 0, 10,000 or 100,000 resting or static objects (half resting items, half static scenery, on a 1.44 m grid over a
+/// 576 x 360 m area around the player). The player walks a 2 m square with the others, walks a 51 m line back and forth, or stands
+/// still. The resting objects are dormant and never visited; the only per-tick cost they add is the exact 96 m gate: dormant
+/// objects within 2 m of the moving player's 96 m circle are tested from the gate ring each tick it moves (the ring is rebuilt
+/// every 2 m of travel), and those it passes over change side without a visit. Mean per world tick.
 /// </summary>
 [MemoryDiagnoser]
 public class SceneRestingObjectsBenchmarks
@@ -22,6 +22,9 @@ public class SceneRestingObjectsBenchmarks
     private int _tick;
     private PhysicsObj[] _movers = null!;
 
+    /// <summary>The scene's world (for the in-process comparison, <c>scene-ab</c>).</summary>
+    internal PhysicsWorld World => _world;
+
     /// <summary>Number of resting or static objects besides the 100 movers.</summary>
     [Params(0, 10_000, 100_000)]
     public int Resting { get; set; }
@@ -30,9 +33,9 @@ public class SceneRestingObjectsBenchmarks
     [Params(GateTracking.Exact, GateTracking.MovingObjectsOnly)]
     public GateTracking Gate { get; set; }
 
-    /// <summary>Whether the player walks with the other movers (true) or stands still among them (false).</summary>
-    [Params(true, false)]
-    public bool PlayerWalks { get; set; } = true;
+    /// <summary>How the player moves.</summary>
+    [Params(PlayerPath.Square, PlayerPath.Line, PlayerPath.Still)]
+    public PlayerPath Player { get; set; } = PlayerPath.Square;
 
     /// <summary>Builds the scene and ticks it until the resting objects are dormant.</summary>
     [GlobalSetup]
@@ -46,7 +49,7 @@ public class SceneRestingObjectsBenchmarks
         }
 
         _world.Player = _movers[0];
-        if (!PlayerWalks)
+        if (Player == PlayerPath.Still)
         {
             ((SimplePartArray)_movers[0].PartArray!).SequenceVelocity = System.Numerics.Vector3.Zero;
         }
@@ -88,10 +91,15 @@ public class SceneRestingObjectsBenchmarks
         if (_tick % 30 == 0)
         {
             float heading = _tick / 30 % 4 * 90f;
-            for (int m = 0; m < _movers.Length; m++)
+            for (int m = Player == PlayerPath.Line ? 1 : 0; m < _movers.Length; m++)
             {
                 _movers[m].SetHeading(heading);
             }
+        }
+
+        if (Player == PlayerPath.Line && _tick % 750 == 0)
+        {
+            _movers[0].SetHeading(_tick / 750 % 2 == 0 ? 90f : 270f); // 51 m east, then back west
         }
 
         _tick++;

@@ -335,9 +335,9 @@ public class GateCrossingTests
     [Fact]
     public void PlayerMovingAboutOneSpot_NeverReMeasuresObjectsFarFromTheGate()
     {
-        // The anchor clock: objects more than GateQueue.Split + 2 x AnchorRadius (16 m) from the 96 m boundary wait on the
-        // player's displacement, not its path. A player walking a 2 m square (within 4 m of where it started) never re-measures
-        // them, however long it walks; a straight walk of 60 m does.
+        // Objects more than the band's half-width (GateQueue.BandHalfWidth, 12 m) from the 96 m boundary are in neither band:
+        // a player walking a 2 m square (within 4 m of where it started) never re-measures them, however long it walks; a
+        // straight walk of 80 m rebuilds the bands from every slot, which does.
         var w = new PhysicsWorld(50.0) { Transition = new FlatGroundTransition() };
         PhysicsObj player = SceneTestContext.Add(w, 1u, SceneTestContext.At(96f, 96f));
         player.SetState(player.State & ~PhysicsState.Gravity);

@@ -4,70 +4,96 @@ using System.Numerics;
 namespace AcDream.Core.Physics;
 
 /// <summary>
-/// Dormant objects whose side of the 96 m player gate the player's travel could change: each is re-measured only once the
-/// player could have carried it across (its distance margin to 96 m; distance is 1-Lipschitz in the player's position).
-/// One queue per side of the player in the visiting order (objects before the player see its position before its update).
+/// Dormant objects whose side of the 96 m player gate the player's movement could change, and the bands that find the ones
+/// it may have changed. One queue per side of the player in the visiting order (objects before the player see its position
+/// before its update).
 /// </summary>
 /// <remarks>
-/// <para>Two clocks bound the player's displacement since an entry was measured. Small margins (&lt; <see cref="Split"/>) wait on
-/// the <i>odometer</i> (path length). Large margins wait on an <i>anchor clock</i>: an anchor that follows the player in hops of
-/// more than <see cref="AnchorRadius"/>; the clock is the hops' total plus that radius, and an entry measured at distance r from
-/// the anchor is due once the clock passes (clock then) + margin − r. A player moving about one spot never re-measures far
-/// objects; on a straight walk both clocks advance alike.</para>
-/// <para>Entries carry what a re-measurement needs, so re-measuring reads no object. A crossing by an idle object is recorded in
-/// the slot (<see cref="RecordFlip"/>) and applied when the object is next read; only objects that must move are woken.</para>
-/// <para>Slots carry a generation: <see cref="Forget"/> bumps it and the entry, now stale, is dropped when the caller would act on
-/// its object (<see cref="Keep"/>), when the far level cascades, or by a compaction once stale entries outnumber live ones; a
-/// stale entry that never crosses just goes round until then (cheaper than reading a slot for every pop). Memory stays bounded
-/// by about twice the live count and, once grown, never allocates.</para>
+/// <para>Distance is 1-Lipschitz in the player's position: an object whose distance from a point C is more than ρ from 96 m keeps
+/// its side while the player stays within ρ of C. So only the objects near C's 96 m circle need testing while the player stays
+/// near C, and the queue keeps two bands of copies (<see cref="GateBand"/>): the <i>ring</i> (half-width
+/// <see cref="RingHalfWidth"/>), tested at every tick the player moved, and the <i>band</i> (<see cref="BandHalfWidth"/>), about
+/// its own centre, from which the ring is rebuilt around the player once it strays <see cref="RingHalfWidth"/> from the ring's
+/// centre. When the band no longer covers the ring's needs, both are rebuilt from every queued object (<see cref="GateSlots"/>).
+/// A still player costs nothing; one moving about a spot tests only the ring; a walking one rebuilds the ring every 2 m and the
+/// band every ~10 m. The scans are conservative filters; the caller decides each flagged object (<see cref="Advance"/>).</para>
+/// <para>Each slot keeps what a test needs (position, side, flags), so testing reads no object. A crossing by an idle object is
+/// recorded in the slot (<see cref="RecordFlip"/>), which keeps every copy's side current, and applied when the object is next
+/// read; only objects that must move are woken.</para>
+/// <para>Slots carry a generation: <see cref="Forget"/> bumps it, so band copies of the slot go stale; a stale copy is dropped
+/// when the scan flags it, when its band is rebuilt, or by a compaction once the objects forgotten since the band was built
+/// reach a quarter of it (or it has grown to twice its built size). Memory stays bounded and, once grown, never
+/// allocates.</para>
 /// </remarks>
 internal sealed class GateQueue
 {
-    /// <summary>Margins below this (metres) wait on the odometer; larger ones on the anchor clock.</summary>
-    public const double Split = 8.0;
+    /// <summary>Half-width (metres) of the ring tested every tick the player moved, and how far the player may stray from its
+    /// centre before it is rebuilt.</summary>
+    public const double RingHalfWidth = 2.0;
 
-    /// <summary>How far (metres) the player may stray from the anchor before it hops.</summary>
-    public const double AnchorRadius = 4.0;
+    /// <summary>Half-width (metres) of the band the ring is rebuilt from.</summary>
+    public const double BandHalfWidth = 12.0;
 
+    /// <summary>Membership slack (metres): a band holds every entry within its half-width plus this of 96 m, so float rounding of
+    /// the band's copies never leaves out one it must hold.</summary>
+    public const double MemberSlack = 0.05;
+
+    /// <summary>Scan tolerance on d² (m², about 1.3 mm of distance at 96 m): covers the float rounding of the band copies and the
+    /// difference between the double estimate and retail's own arithmetic, which the caller resolves.</summary>
+    public const float ScanTolerance = 0.25f;
+
+    private const double Gate = PhysicsGlobals.PlayerActivityDistance;
+    private const byte FromRing = 0, FromBand = 1, FromSlots = 2;
     private const long NoFlip = long.MinValue;
 
-    private readonly GateWheel _odometerWheel;
-    private readonly GateWheel _anchorWheel;
-
-    // The last two gate crossings of a slot's object since it was queued (tick and side): one cache line per record.
-    private struct Flips
+    // A slot's record, what a hit reads and writes in one cache line: its state (generation << 1 | 1 when beyond 96 m at its
+    // last check), so that liveness and side are one read, and its last two gate crossings since it was queued (tick, side).
+    // It also says where the slot's copy in the band is (index, valid while the band's epoch is unchanged), so that a crossing
+    // updates that copy's side too: every band copy's side stays current, and a ring rebuilt from the band starts current.
+    private struct SlotRecord
     {
-        public long Tick, PrevTick;
+        public int State;
+        public int BandIndex, BandEpoch;
         public bool Far, PrevFar;
+        public long Tick, PrevTick;
     }
 
-    // Slots: the object, its generation, its crossings.
+    // Slots: the object, its record, its flags, and its position and side laid out for the rebuild from every slot.
     private PhysicsObj?[] _obj = new PhysicsObj?[64];
-    private int[] _generation = new int[64];
-    private Flips[] _flips = new Flips[64];
+    private SlotRecord[] _record = new SlotRecord[64];
+    private byte[] _flags = new byte[64];
+    private readonly GateSlots _pos = new();
     private int[] _free = new int[64];
     private int _freeCount;
     private int _slotCount;
-    private int _stale;
 
-    // The clocks as of this tick's Advance.
-    private double _odometer;
-    private double _anchorTotal;
-    private double _anchorX, _anchorY, _anchorZ;
-    private bool _hasAnchor;
-    private double _fromAnchor;
+    private readonly GateBand _ring = new(RingHalfWidth);
+    private readonly GateBand _band = new(BandHalfWidth);
+
+    // Objects forgotten since each band was built or compacted: a band is compacted once they reach a quarter of its entries
+    // (whether or not they were in it), which bounds its stale copies at a quarter and costs O(1) amortised per forget.
+    private int _forgottenSinceRing, _forgottenSinceBand;
+
+    // The player position last tested against (the position the queue's objects saw).
+    private bool _hasSeen;
+    private uint _seenCell;
+    private Vector3 _seenOrigin;
     private double _seenX, _seenY, _seenZ;
 
-    public GateQueue()
-    {
-        _odometerWheel = new GateWheel(this);
-        _anchorWheel = new GateWheel(this);
-    }
+    // A rebuild decided by Advance and done by Finish (after the caller has resolved the hits, so copies take the new sides).
+    private byte _rebuild; // 0 none; FromBand: the ring from the band's selection; FromSlots: both from the slot lists below
+    private int[] _hitSlots = new int[64];
+    private int[] _ringSlots = new int[64];
+    private int _ringSlotCount;
+    private int[] _bandSlots = new int[64];
+    private int _bandSlotCount;
 
-    /// <summary>Entries held, stale ones included (at most about twice the queued objects plus a constant).</summary>
-    public int EntryCount => _odometerWheel.Count + _anchorWheel.Count;
+    public GateQueue() => _pos.Grow(_obj.Length);
 
-    /// <summary>The seen player position of this tick (global), as passed to <see cref="Advance"/>.</summary>
+    /// <summary>Slots in use plus band copies, stale ones included (bounded by a small multiple of the queued objects).</summary>
+    public int EntryCount => _slotCount - _freeCount + _ring.Count + _band.Count;
+
+    /// <summary>The player position of this tick's <see cref="Advance"/> (global).</summary>
     public void Seen(out double x, out double y, out double z)
     {
         x = _seenX;
@@ -75,71 +101,151 @@ internal sealed class GateQueue
         z = _seenZ;
     }
 
-    /// <summary>The object of a popped entry.</summary>
-    public PhysicsObj Object(in GateEntry e) => _obj[e.Slot]!;
+    /// <summary>The object in a slot.</summary>
+    public PhysicsObj Object(int slot) => _obj[slot]!;
 
-    internal bool IsLive(in GateEntry e) => _generation[e.Slot] == e.Generation;
+    /// <summary>True when the slot still holds the object it held at generation <paramref name="generation"/>.</summary>
+    public bool IsCurrent(int slot, int generation) => _record[slot].State >> 1 == generation;
 
-    internal void StaleDropped() => _stale--;
+    /// <summary>True when the hit's object is still in the queue (it was not woken or removed since the scan).</summary>
+    public bool IsLive(in GateHit h) => IsCurrent(h.Slot, h.Generation);
 
-    /// <summary>True when a popped entry still belongs to its slot's object; a stale one is counted as dropped (the caller
-    /// discards it).</summary>
-    public bool Keep(in GateEntry e)
+    /// <summary>True when the slot's object was beyond 96 m at its last check.</summary>
+    public bool IsFar(int slot) => (_record[slot].State & 1) != 0;
+
+    /// <summary>A hit's global position: from the band copy it came from (float offsets, within ~3e-5 m), or from its slot.</summary>
+    public void Position(in GateHit h, out double x, out double y, out double z)
     {
-        if (_generation[e.Slot] == e.Generation)
+        GateBand? b = BandOf(h);
+        if (b is not null)
         {
-            return true;
+            b.Position(h.Index, out x, out y, out z);
+            return;
         }
 
-        _stale--;
-        return false;
+        _pos.Global(h.Slot, out x, out y, out z);
+    }
+
+    /// <summary>A position's global x, y, z: block offsets are whole multiples of 192 m (as <c>LandDefs::get_block_offset</c>), so
+    /// differences of these agree with <c>Position::get_offset</c> to float rounding.</summary>
+    public static void Global(in Position p, out double x, out double y, out double z)
+    {
+        uint cell = p.ObjCellId;
+        x = ((cell >> 24) & 0xFF) * (double)LandDefs.BlockLength + p.Frame.Origin.X;
+        y = ((cell >> 16) & 0xFF) * (double)LandDefs.BlockLength + p.Frame.Origin.Y;
+        z = p.Frame.Origin.Z;
     }
 
     /// <summary>
-    /// Starts this tick for the queue: the odometer reading and the player position the queue's objects see, then pops the live
-    /// entries now due into <paramref name="due"/> (grown as needed) and returns their number. Each popped object stays queued:
-    /// the caller re-queues it (<see cref="Requeue"/>) or forgets it.
+    /// Tests the queue against this tick's player position <paramref name="seen"/>: writes into <paramref name="hits"/> (grown as
+    /// needed) every live entry that may have crossed 96 m since it was last tested (and some near 96 m that did not), and returns
+    /// their number; <paramref name="tested"/> is the number of entries tested. Nothing is tested when the player has not moved.
+    /// The caller resolves each hit (<see cref="IsFar"/>, <see cref="RecordFlip"/>, or a wake), then calls <see cref="Finish"/>.
     /// </summary>
-    public int Advance(double odometer, in Position seen, ref GateEntry[] due)
+    public int Advance(in Position seen, ref GateHit[] hits, out long tested)
     {
-        _odometer = odometer;
-        GateEntry.Global(seen, out _seenX, out _seenY, out _seenZ);
-        if (!_hasAnchor)
+        tested = 0;
+        if (_hasSeen && seen.ObjCellId == _seenCell && seen.Frame.Origin == _seenOrigin)
         {
-            SetAnchor();
-            _hasAnchor = true;
+            return 0;
         }
 
-        double dx = _seenX - _anchorX, dy = _seenY - _anchorY, dz = _seenZ - _anchorZ;
-        _fromAnchor = Math.Sqrt(dx * dx + dy * dy + dz * dz);
-        if (_fromAnchor > AnchorRadius)
+        _hasSeen = true;
+        _seenCell = seen.ObjCellId;
+        _seenOrigin = seen.Frame.Origin;
+        Global(seen, out _seenX, out _seenY, out _seenZ);
+        double px = _seenX, py = _seenY, pz = _seenZ;
+        float r2 = (float)(Gate * Gate);
+        double fromRing = _ring.Valid ? _ring.DistanceTo(px, py, pz) : double.PositiveInfinity;
+        if (fromRing < RingHalfWidth)
         {
-            _anchorTotal += _fromAnchor;
-            SetAnchor();
-            _fromAnchor = 0.0;
+            tested = _ring.Count;
+            return _ring.Scan(px, py, pz, r2, ScanTolerance, FromRing, ref hits, 0);
         }
 
-        if (_stale > 1024 && _stale > EntryCount - _stale)
+        // The player left the ring. Entries that may have crossed since their last test lie within fromRing of 96 m about the
+        // ring's centre; the new ring about the player holds those within RingHalfWidth (+ slack) of 96 m about the player. If
+        // the band holds both sets, the ring is rebuilt from it; otherwise both are rebuilt from every slot.
+        double fromBand = _band.Valid ? _band.DistanceTo(px, py, pz) : double.PositiveInfinity;
+        double centres = _ring.Valid && _band.Valid
+            ? _band.DistanceTo(_ring.CentreX, _ring.CentreY, _ring.CentreZ)
+            : double.PositiveInfinity;
+        if (fromRing + centres + MemberSlack <= BandHalfWidth && RingHalfWidth + MemberSlack + fromBand <= BandHalfWidth)
         {
-            _odometerWheel.Compact();
-            _anchorWheel.Compact();
-            _stale = 0; // (the count may run high: an object woken after its entry was popped leaves nothing behind)
+            // (The ring's entries are all in the band: its region lay inside the band's when it was built, and additions go to
+            // both; so the band's scan finds every crossing.)
+            tested = _band.Count;
+            double lo = Math.Max(0.0, Gate - RingHalfWidth - MemberSlack), hi = Gate + RingHalfWidth + MemberSlack;
+            _rebuild = FromBand;
+            return _band.Scan(px, py, pz, r2, ScanTolerance, FromBand, ref hits, 0, true, (float)(lo * lo), (float)(hi * hi));
         }
 
-        int n = _odometerWheel.PopDue(_odometer, ref due, 0);
-        return _anchorWheel.PopDue(_anchorTotal + AnchorRadius, ref due, n);
+        tested = _slotCount;
+        _rebuild = FromSlots;
+        return ScanSlots(seen, ref hits);
     }
 
-    private void SetAnchor()
+    /// <summary>Ends this tick's <see cref="Advance"/> once its hits are resolved: band copies of the hits take their slots' sides
+    /// (stale ones die), then any rebuild Advance decided is done about the player's position, and bands grown stale are
+    /// compacted.</summary>
+    public void Finish(GateHit[] hits, int n)
     {
-        _anchorX = _seenX;
-        _anchorY = _seenY;
-        _anchorZ = _seenZ;
+        for (int i = 0; i < n; i++)
+        {
+            GateHit h = hits[i];
+            GateBand? b = BandOf(h);
+            if (b is null)
+            {
+                continue;
+            }
+
+            if (IsLive(h))
+            {
+                b.SetSide(h.Index, IsFar(h.Slot));
+            }
+            else
+            {
+                b.Kill(h.Index);
+            }
+        }
+
+        if (_rebuild == FromBand)
+        {
+            // The ring inherits the band's stale copies in its selection: no more than the band's compaction rule allows.
+            _ring.Reset(_seenX, _seenY, _seenZ);
+            _band.CopyMembersTo(_ring);
+            _ring.MarkBuilt();
+            _forgottenSinceRing = 0;
+        }
+        else if (_rebuild == FromSlots)
+        {
+
+            _ring.Reset(_seenX, _seenY, _seenZ);
+            _band.Reset(_seenX, _seenY, _seenZ);
+            AppendLive(_ring, _ringSlots, _ringSlotCount);
+            AppendLive(_band, _bandSlots, _bandSlotCount);
+            _ring.MarkBuilt();
+            _band.MarkBuilt();
+            _forgottenSinceRing = _forgottenSinceBand = 0;
+        }
+
+        _rebuild = 0;
+        if (_forgottenSinceRing * 4 > _ring.CountAtBuild + 64 || _ring.Count > 2 * _ring.CountAtBuild + 64)
+        {
+            _ring.Compact(this);
+            _forgottenSinceRing = 0;
+        }
+
+        if (_forgottenSinceBand * 4 > _band.CountAtBuild + 64 || _band.Count > 2 * _band.CountAtBuild + 64)
+        {
+            _band.Compact(this);
+            _forgottenSinceBand = 0;
+        }
     }
 
-    /// <summary>Queues <paramref name="o"/> (queued nowhere), measured against this tick's seen position with the given side and
-    /// safe margin (metres the player may travel before it could cross).</summary>
-    public void Add(PhysicsObj o, bool far, bool idle, bool onWalkable, double margin)
+    /// <summary>Queues <paramref name="o"/> (queued nowhere), tested against this tick's player position: on the far side of 96 m
+    /// when <paramref name="far"/>.</summary>
+    public void Add(PhysicsObj o, bool far, bool idle, bool onWalkable)
     {
         int slot;
         if (_freeCount != 0)
@@ -157,44 +263,32 @@ internal sealed class GateQueue
         }
 
         _obj[slot] = o;
-        _flips[slot] = new Flips { Tick = NoFlip, PrevTick = NoFlip };
+        ref SlotRecord r = ref _record[slot];
+        r.State = (r.State & ~1) | (far ? 1 : 0);
+        r.BandEpoch = _band.Epoch - 1; // no band copy yet
+        r.Tick = NoFlip;
+        r.PrevTick = NoFlip;
+        _flags[slot] = (byte)((idle ? GateFlags.Idle : 0) | (onWalkable ? GateFlags.OnWalkable : 0));
+        _pos.Set(slot, o._position, far);
         o._gateQueue = this;
         o._gateSlot = slot;
-        uint cell = o._position.ObjCellId;
-        Vector3 origin = o._position.Frame.Origin;
-        var e = new GateEntry
-        {
-            X = origin.X,
-            Y = origin.Y,
-            Z = origin.Z,
-            Slot = slot,
-            Generation = _generation[slot],
-            BlockX = (byte)(cell >> 24),
-            BlockY = (byte)(cell >> 16),
-            Flags = (byte)((far ? GateFlags.Far : 0) | (idle ? GateFlags.Idle : 0) | (onWalkable ? GateFlags.OnWalkable : 0)),
-        };
-        Requeue(e, margin);
-    }
-
-    /// <summary>Puts a popped entry back, re-measured with <paramref name="margin"/> against this tick's seen position.</summary>
-    public void Requeue(in GateEntry e, double margin)
-    {
-        if (margin < Split)
-        {
-            _odometerWheel.Push(e, _odometer + margin);
-        }
-        else
-        {
-            // Displacement since now <= (anchor total then - now) + the player's distance from the anchor then + now.
-            _anchorWheel.Push(e, _anchorTotal + margin - _fromAnchor);
-        }
+        AppendIfNear(_ring, slot);
+        AppendIfNear(_band, slot);
     }
 
     /// <summary>Records that the slot's idle object crossed the gate in tick <paramref name="tick"/> (to the far side when
-    /// <paramref name="far"/>); the last two crossings are kept, enough to answer for this tick and the one before.</summary>
+    /// <paramref name="far"/>), which is now its side; the last two crossings are kept, enough to answer for this tick and the
+    /// one before.</summary>
     public void RecordFlip(int slot, long tick, bool far)
     {
-        ref Flips f = ref _flips[slot];
+        ref SlotRecord f = ref _record[slot];
+        f.State = (f.State & ~1) | (far ? 1 : 0);
+        if (f.BandEpoch == _band.Epoch)
+        {
+            _band.SetSide(f.BandIndex, far);
+        }
+
+        _pos.SetSide(slot, far);
         f.PrevTick = f.Tick;
         f.PrevFar = f.Far;
         f.Tick = tick;
@@ -204,7 +298,7 @@ internal sealed class GateQueue
     /// <summary>The last crossing of the slot's object in or before tick <paramref name="tick"/>, if any since it was queued.</summary>
     public bool LastFlip(int slot, long tick, out long flipTick, out bool far)
     {
-        ref Flips f = ref _flips[slot];
+        ref SlotRecord f = ref _record[slot];
         if (f.Tick != NoFlip && f.Tick <= tick)
         {
             flipTick = f.Tick;
@@ -224,7 +318,7 @@ internal sealed class GateQueue
         return false;
     }
 
-    /// <summary>Takes <paramref name="o"/> out of whichever queue holds it (no effect when none does); its entry becomes stale.</summary>
+    /// <summary>Takes <paramref name="o"/> out of whichever queue holds it (no effect when none does); its band copies go stale.</summary>
     public static void Forget(PhysicsObj o)
     {
         GateQueue? q = o._gateQueue;
@@ -234,24 +328,94 @@ internal sealed class GateQueue
         }
 
         int slot = o._gateSlot;
-        q._generation[slot]++;
+        q._record[slot].State = (((q._record[slot].State >> 1) + 1) << 1) | 1; // next generation; far, so a free slot (x = +inf) is never a hit
         q._obj[slot] = null;
+        q._pos.Free(slot);
         if (q._freeCount == q._free.Length)
         {
             Array.Resize(ref q._free, q._free.Length * 2);
         }
 
         q._free[q._freeCount++] = slot;
-        q._stale++;
+        q._forgottenSinceRing++;
+        q._forgottenSinceBand++;
         o._gateQueue = null;
         o._gateSlot = -1;
+    }
+
+    private GateBand? BandOf(in GateHit h) => h.Band == FromRing ? _ring : h.Band == FromBand ? _band : null;
+
+    /// <summary>Tests every slot (one SIMD pass): the hits, and the members of the ring and band about the player.</summary>
+    private int ScanSlots(in Position seen, ref GateHit[] hits)
+    {
+        int n = _pos.Scan(seen, _slotCount, (float)(Gate * Gate), ScanTolerance,
+            SqF(Gate - RingHalfWidth - MemberSlack), SqF(Gate + RingHalfWidth + MemberSlack),
+            SqF(Gate - BandHalfWidth - MemberSlack), SqF(Gate + BandHalfWidth + MemberSlack),
+            ref _hitSlots, ref _ringSlots, out _ringSlotCount, ref _bandSlots, out _bandSlotCount);
+        if (n > hits.Length)
+        {
+            Array.Resize(ref hits, Math.Max(n, hits.Length * 2));
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            int s = _hitSlots[i];
+            hits[i] = new GateHit(s, _record[s].State >> 1, _flags[s], FromSlots, s);
+        }
+
+        return n;
+    }
+
+    private static float SqF(double v) => (float)(Math.Max(0.0, v) * Math.Max(0.0, v));
+
+    private void AppendLive(GateBand band, int[] slots, int count)
+    {
+        for (int i = 0; i < count; i++)
+        {
+            int s = slots[i];
+            _pos.Global(s, out double x, out double y, out double z); // (a free slot is never selected)
+            Appended(band, s, band.Append(s, _record[s].State >> 1, _flags[s], x, y, z, IsFar(s)));
+        }
+    }
+
+    /// <summary>A band's entry for a slot's object has moved to <paramref name="index"/> (the band is compacting).</summary>
+    internal void Moved(GateBand band, int slot, int index) => Appended(band, slot, index);
+
+    private void Appended(GateBand band, int slot, int index)
+    {
+        if (band == _band)
+        {
+            ref SlotRecord r = ref _record[slot];
+            r.BandIndex = index;
+            r.BandEpoch = band.Epoch;
+        }
+    }
+
+    private void AppendIfNear(GateBand band, int slot)
+    {
+        _pos.Global(slot, out double x, out double y, out double z);
+        if (band.Valid && Math.Abs(band.DistanceTo(x, y, z) - Gate) < band.HalfWidth + MemberSlack)
+        {
+            Appended(band, slot, band.Append(slot, _record[slot].State >> 1, _flags[slot], x, y, z, IsFar(slot)));
+        }
     }
 
     private void GrowSlots()
     {
         int size = _obj.Length * 2;
         Array.Resize(ref _obj, size);
-        Array.Resize(ref _generation, size);
-        Array.Resize(ref _flips, size);
+        Array.Resize(ref _record, size);
+        Array.Resize(ref _flags, size);
+        _pos.Grow(size);
     }
+}
+
+/// <summary>Bits of a gate slot's flags.</summary>
+internal static class GateFlags
+{
+    /// <summary>Idle: a visit on either side of the gate changes nothing but bookkeeping, so a crossing needs no visit.</summary>
+    public const byte Idle = 2;
+
+    /// <summary>On walkable ground (within 96 m it then re-activates every other tick).</summary>
+    public const byte OnWalkable = 4;
 }

@@ -14,10 +14,10 @@ namespace AcDream.Core.Physics;
 /// a few clocks the world keeps per tick, to exactly the values retail would hold. Everything simulated (frames, velocities, cell
 /// ids, contact state, hooks) is bit-identical to visiting every object (<see cref="VisitEveryObject"/>), which the tests check.</para>
 /// <para>Objects wake on events, not by scanning: any mutating member (velocity, omega, hooks, interpolation, placement, state,
-/// components…) wakes its object. A dormant object whose distance to the player may cross the 96 m gate is re-measured only when
-/// the player has moved far enough for that to be possible (<see cref="GateQueue"/>: the player's path for small margins, its
-/// displacement from a hopping anchor for large ones), from a copy of its position, so a still player costs nothing and a
-/// re-measurement reads no object. An idle object that crosses is not visited either: the crossing is recorded and its
+/// components…) wakes its object. A dormant object whose distance to the player may cross the 96 m gate is tested only when the
+/// player has moved, and only while it lies near the 96 m circle about the player (<see cref="GateQueue"/>: a ring of copies of
+/// the objects within 2 m of it, rebuilt as the player moves on), from a copy of its position, so a still player costs nothing
+/// and a test reads no object. An idle object that crosses is not visited either: the crossing is recorded and its
 /// bookkeeping follows retail's from that tick on. Only objects that would move once near are woken by a crossing.</para>
 /// <para>Objects are visited in ascending id order (then creation order), whatever the order in which they were created or woken.</para>
 /// </remarks>
@@ -36,13 +36,11 @@ public sealed partial class PhysicsWorld
     private PhysicsObj? _playerSeenPrev, _playerSeenNow;
     private Position _playerBeforePrev, _playerAfterPrev, _playerBeforeNow, _playerAfterNow;
     private PhysicsObj? _current;
-    private double _odometer;
-    private double _odometerBefore;
     // Objects ordered before the player see its position before its update; those after, after it: one queue each, so each
-    // is re-measured once per tick against the position it sees.
+    // is tested against the position it sees.
     private readonly GateQueue _gateBefore = new();
     private readonly GateQueue _gateAfter = new();
-    private GateEntry[] _gateDue = new GateEntry[16];
+    private GateHit[] _gateHits = new GateHit[16];
 
     /// <summary>
     /// The effects this scene simulates; <see cref="SceneEffects.All"/> (retail) by default. Declare fewer to pay for fewer.
@@ -61,7 +59,7 @@ public sealed partial class PhysicsWorld
     /// </summary>
     public GateTracking GateTracking { get; init; } = GateTracking.Exact;
 
-    /// <summary>Gate statistics since the world was created: dormant objects re-measured against the 96 m gate, crossings
+    /// <summary>Gate statistics since the world was created: dormant objects' copies re-measured against the 96 m gate, crossings
     /// handled without a visit, and crossings that woke the object.</summary>
     internal long GateRemeasures, GateFlips, GateWakes;
 
@@ -99,8 +97,9 @@ public sealed partial class PhysicsWorld
     /// 96 from the double update_object compared, so its side is not known from it (an ulp at 96 is 7.6e-6).</summary>
     internal static float GateSafetyMargin => 1e-4f;
 
-    /// <summary>How far a gate margin is cut for rounding: retail's distance (float offsets, spilled sums) and the queue's
-    /// double estimate differ by a few float ulps of the block-relative coordinates, far below this.</summary>
+    /// <summary>How far retail's distance (float offsets, spilled sums) and the queue's estimate (double arithmetic on float
+    /// copies of the positions, within ~3e-5 m) may differ: far below this. Within twice this of 96 m, retail's own arithmetic
+    /// decides.</summary>
     private static double GateKeySlack(double distance) => 2e-4 + distance * 2e-6;
 
     /// <summary>True when, during a tick, the object's place in the visiting order has already passed (retail already visited it).</summary>
@@ -287,7 +286,6 @@ public sealed partial class PhysicsWorld
         _pingPongNow = Consume(LastUpdate, CurrentTime);
         _flipToFarOk = Consume(_tickTimePrev, CurrentTime) == _consumedNow && Consume(_pingPongPrev, CurrentTime) == _consumedNow;
         _flipToNearOk = _tickTimeNow == _consumedNow;
-        bool hadPlayer = _playerSeenNow is not null;
         _playerSeenPrev = _playerSeenNow;
         _playerBeforePrev = _playerBeforeNow;
         _playerAfterPrev = _playerAfterNow;
@@ -297,12 +295,6 @@ public sealed partial class PhysicsWorld
         if (player is not null)
         {
             _playerBeforeNow = player._position;
-            if (hadPlayer)
-            {
-                _odometer += Travel(_playerAfterPrev, _playerBeforeNow);
-            }
-
-            _odometerBefore = _odometer;
             _playerAfterNow = _playerBeforeNow;
         }
 
@@ -312,7 +304,7 @@ public sealed partial class PhysicsWorld
         if (player is not null)
         {
             // Objects ordered before the player see its position before its update.
-            PopGateCandidates(_gateBefore, _odometerBefore, _playerBeforeNow);
+            CheckGate(_gateBefore, _playerBeforeNow);
         }
 
         int visits = 0;
@@ -326,8 +318,7 @@ public sealed partial class PhysicsWorld
             {
                 PlayerListener?.PlayerPhysicsUpdated(obj);
                 _playerAfterNow = player._position;
-                _odometer += Travel(_playerBeforeNow, _playerAfterNow);
-                PopGateCandidates(_gateAfter, _odometer, _playerAfterNow);
+                CheckGate(_gateAfter, _playerAfterNow);
                 checkedAfterPlayer = true;
             }
         }
@@ -335,7 +326,7 @@ public sealed partial class PhysicsWorld
         if (!checkedAfterPlayer && player is not null)
         {
             // The player is dormant-proof, so it is always in the list; this covers a player with no cell (bails) too.
-            PopGateCandidates(_gateAfter, _odometer, _playerAfterNow);
+            CheckGate(_gateAfter, _playerAfterNow);
         }
 
         _inTick = false;
@@ -344,84 +335,57 @@ public sealed partial class PhysicsWorld
         PutIdleToSleep();
     }
 
-    /// <summary>The player's travel between two positions, for the gate odometer: never 0 when the positions differ (a move
-    /// below float rounding still re-measures objects due at the next movement).</summary>
-    private static double Travel(in Position a, in Position b)
+    /// <summary>Tests the dormant gated objects whose side of 96 m the player's movement may have changed (the queue's bands,
+    /// from the positions the queue holds, touching no object). An idle object that crossed the gate has the crossing recorded,
+    /// and takes the state this tick's visit leaves when next read (<see cref="PhysicsObj.Materialize"/>); an object that must
+    /// move once near and one whose crossing leaves a state no dormancy kind describes are woken and visited later in this same
+    /// tick, in order. Near the boundary the side is decided with retail's own arithmetic.</summary>
+    private void CheckGate(GateQueue queue, in Position seen)
     {
-        Vector3 d = a.GetOffset(b);
-        double t = Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y + (double)d.Z * d.Z);
-        if (t == 0.0 && (a.ObjCellId != b.ObjCellId || a.Frame.Origin != b.Frame.Origin))
+        int n = queue.Advance(seen, ref _gateHits, out long tested);
+        GateRemeasures += tested;
+        if (n != 0)
         {
-            t = 1e-9;
-        }
-
-        return t;
-    }
-
-    /// <summary>Re-measures the dormant gated objects whose margin the player's travel may have used up, from the positions the
-    /// queue holds (touching no object). An idle object that crossed the 96 m gate has the crossing recorded, and takes the state
-    /// this tick's visit leaves when next read (<see cref="PhysicsObj.Materialize"/>); an object that must move once near and one
-    /// whose crossing leaves a state no dormancy kind describes are woken and visited later in this same tick, in order. Near
-    /// the boundary the side is decided with retail's own arithmetic, and the object is due again at the next movement.</summary>
-    private void PopGateCandidates(GateQueue queue, double odometer, in Position seen)
-    {
-        int n = queue.Advance(odometer, seen, ref _gateDue);
-        if (n == 0)
-        {
-            return;
-        }
-
-        queue.Seen(out double sx, out double sy, out double sz);
-        GateRemeasures += n;
-        for (int i = 0; i < n; i++)
-        {
-            ref GateEntry e = ref _gateDue[i];
-            e.Global(out double gx, out double gy, out double gz);
-            double dx = gx - sx, dy = gy - sy, dz = gz - sz;
-            double d = Math.Sqrt(dx * dx + dy * dy + dz * dz);
-            double margin = Math.Abs(d - PhysicsGlobals.PlayerActivityDistance);
-            double slack = GateKeySlack(d);
-            if (!(margin > 2.0 * slack))
+            queue.Seen(out double sx, out double sy, out double sz);
+            for (int i = 0; i < n; i++)
             {
-                // Near the boundary: decide with retail's own arithmetic (update_object's get_offset and double sqrt).
-                if (!queue.Keep(e))
+                GateHit h = _gateHits[i];
+                if (!queue.IsLive(h))
                 {
-                    continue; // the object was woken or removed since: the entry is stale
+                    continue; // the object was woken or removed since (or an earlier hit of this tick woke it)
                 }
 
-                PhysicsObj near = queue.Object(e);
-                Vector3 pv = seen.GetOffset(near._position);
-                d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
-                margin = Math.Abs(d - PhysicsGlobals.PlayerActivityDistance);
-                slack = GateKeySlack(d);
-            }
+                queue.Position(h, out double gx, out double gy, out double gz);
+                double dx = gx - sx, dy = gy - sy, dz = gz - sz;
+                double d = Math.Sqrt(dx * dx + dy * dy + dz * dz);
+                if (!(Math.Abs(d - PhysicsGlobals.PlayerActivityDistance) > 2.0 * GateKeySlack(d)))
+                {
+                    // Near the boundary: decide with retail's own arithmetic (update_object's get_offset and double sqrt).
+                    Vector3 pv = seen.GetOffset(queue.Object(h.Slot)._position);
+                    d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+                }
 
-            bool isFar = d > PhysicsGlobals.PlayerActivityDistance;
-            if (isFar != e.Far)
-            {
-                if (!queue.Keep(e))
+                bool isFar = d > PhysicsGlobals.PlayerActivityDistance;
+                if (isFar == queue.IsFar(h.Slot))
                 {
                     continue;
                 }
 
-                bool describable = (e.Flags & GateFlags.Idle) != 0
-                    && (isFar ? _flipToFarOk : (e.Flags & GateFlags.OnWalkable) != 0 || _flipToNearOk);
+                bool describable = (h.Flags & GateFlags.Idle) != 0
+                    && (isFar ? _flipToFarOk : (h.Flags & GateFlags.OnWalkable) != 0 || _flipToNearOk);
                 if (!describable)
                 {
                     GateWakes++;
-                    WakeDormant(queue.Object(e));
+                    WakeDormant(queue.Object(h.Slot));
                     continue;
                 }
 
-                queue.RecordFlip(e.Slot, _tick, isFar);
-                e.Far = isFar;
+                queue.RecordFlip(h.Slot, _tick, isFar);
                 GateFlips++;
             }
-
-            // An object within the rounding slack is due again at the player's next movement, however small. (A stale entry
-            // that did not cross goes round again until a compaction drops it: harmless, and it saves reading a slot per pop.)
-            queue.Requeue(e, Math.Max(0.0, margin - slack));
         }
+
+        queue.Finish(_gateHits, n);
     }
 
     /// <summary>After the visits: objects whose next visits would change nothing but bookkeeping leave the visiting list.</summary>
@@ -455,7 +419,7 @@ public sealed partial class PhysicsWorld
                     bool before = _player is not null && o.WorldIndex < _player.WorldIndex;
                     float pd = o._playerDistance;
                     (before ? _gateBefore : _gateAfter).Add(o, pd > PhysicsGlobals.PlayerActivityDistance, idle,
-                        (o._transientState & TransientState.OnWalkable) != 0, Math.Max(0.0, margin - GateKeySlack(pd)));
+                        (o._transientState & TransientState.OnWalkable) != 0);
                 }
             }
         }
