@@ -27,11 +27,12 @@ public class GateQueueTests
         var world = new PhysicsWorld(0.0);
         var queue = new GateQueue();
         var objects = new List<PhysicsObj>();
-        // 1,500 objects over about 500 m square (parts of up to 9 landblocks), 0-5 m up.
+        // 1,500 objects over about 500 m square (parts of up to 9 landblocks), most 0-5 m up, one in five up to 150 m (so that
+        // height alone can put an object beyond 96 m: the grid's cells are skipped by their 3D extent).
         for (int k = 0; k < 1500; k++)
         {
             Position p = SceneTestContext.At(-150f + (float)rng.NextDouble() * 500f, -150f + (float)rng.NextDouble() * 500f,
-                (float)rng.NextDouble() * 5f);
+                (float)rng.NextDouble() * (k % 5 == 0 ? 150f : 5f));
             objects.Add(SceneTestContext.Add(world, 10u + (uint)k, p));
         }
 
@@ -169,6 +170,58 @@ public class GateQueueTests
             }
 
             Assert.InRange(ring.Count, inside, inside + maybe);
+        }
+    }
+
+    [Theory]
+    [InlineData(21)]
+    [InlineData(22)]
+    public void GridSelection_HoldsEveryEntryNearEitherCircle(int seed)
+    {
+        // 4,000 entries over 600 m square and 0-160 m up (height alone can carry one across 96 m), a player and a former ring
+        // centre up to 40 m apart: the band selection is exactly the entries within the band width of 96 m about the player,
+        // and every entry within the crossing width about the former centre that the side test flags is among the hits.
+        var rng = new Random(seed);
+        var grid = new GateGrid();
+        const int count = 4000;
+        var place = new (int Cell, int Index)[count];
+        for (int i = 0; i < count; i++)
+        {
+            double x = 20_000.0 + rng.NextDouble() * 600.0, y = 30_000.0 + rng.NextDouble() * 600.0;
+            grid.Add(i, 0, 0, x, y, (float)(rng.NextDouble() * 160.0), rng.Next(2) == 0, out int c, out int k);
+            place[i] = (c, k);
+        }
+
+        var hits = new long[4];
+        var band = new long[4];
+        var ring = new long[4];
+        for (int t = 0; t < 40; t++)
+        {
+            double px = 20_150.0 + rng.NextDouble() * 300.0, py = 30_150.0 + rng.NextDouble() * 300.0, pz = rng.NextDouble() * 20.0;
+            double qx = px + (rng.NextDouble() * 2.0 - 1.0) * 28.0, qy = py + (rng.NextDouble() * 2.0 - 1.0) * 28.0;
+            const double crossWidth = 9.0, bandWidth = 12.05, ringWidth = 2.05, tolerance = 0.25;
+            int n = grid.Select(px, py, pz, qx, qy, pz, crossWidth, bandWidth, ringWidth, tolerance, ref hits, ref band,
+                out int b, ref ring, out int r, out long tested);
+            var hitSet = new HashSet<long>(hits[..n]);
+            var bandSet = new HashSet<long>(band[..b]);
+            Assert.True(tested < count, $"tested {tested} of {count}: the selection should skip cells");
+            for (int i = 0; i < count; i++)
+            {
+                grid.Global(place[i].Cell, place[i].Index, out double x, out double y, out double z);
+                double dp = Math.Sqrt((x - px) * (x - px) + (y - py) * (y - py) + (z - pz) * (z - pz));
+                double dq = Math.Sqrt((x - qx) * (x - qx) + (y - qy) * (y - qy) + (z - pz) * (z - pz));
+                long key = GateGrid.Pack(place[i].Cell, place[i].Index);
+                if (Math.Abs(Math.Abs(dp - Gate) - bandWidth) > 1e-6)
+                {
+                    Assert.Equal(Math.Abs(dp - Gate) < bandWidth, bandSet.Contains(key));
+                }
+
+                double side = grid.At(place[i].Cell, place[i].Index).Side;
+                if (Math.Abs(dq - Gate) < crossWidth - 1e-6 && side * (dp * dp - Gate * Gate) < tolerance - 1e-6)
+                {
+                    Assert.Contains(key, hitSet);
+                }
+            }
         }
     }
 

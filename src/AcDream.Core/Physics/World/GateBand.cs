@@ -278,5 +278,5 @@ internal sealed class GateBand
 }
 
 /// <summary>A gate entry a scan flagged: its slot, generation and <see cref="GateFlags"/>, and where it came from (a band and
-/// index, or the slots).</summary>
-internal readonly record struct GateHit(int Slot, int Generation, byte Flags, byte Band, int Index);
+/// index, or a grid cell and index).</summary>
+internal readonly record struct GateHit(int Slot, int Generation, byte Flags, byte Band, int Index, int Cell = 0);

@@ -14,10 +14,11 @@ namespace AcDream.Core.Physics;
 /// near C, and the queue keeps two bands of copies (<see cref="GateBand"/>): the <i>ring</i> (half-width
 /// <see cref="RingHalfWidth"/>), tested at every tick the player moved, and the <i>band</i> (<see cref="BandHalfWidth"/>), about
 /// its own centre, from which the ring is rebuilt around the player once it strays <see cref="RingHalfWidth"/> from the ring's
-/// centre. When the band no longer covers the ring's needs, both are rebuilt from every queued object (<see cref="GateSlots"/>).
+/// centre. When the band no longer covers the ring's needs, both are rebuilt from the cells of the grid that can hold
+/// an object near the player's circle (<see cref="GateGrid"/>).
 /// A still player costs nothing; one moving about a spot tests only the ring; a walking one rebuilds the ring every 2 m and the
 /// band every ~10 m. The scans are conservative filters; the caller decides each flagged object (<see cref="Advance"/>).</para>
-/// <para>Each slot keeps what a test needs (position, side, flags), so testing reads no object. A crossing by an idle object is
+/// <para>Each slot and its grid entry keep what a test needs (position, side, flags), so testing reads no object. A crossing by an idle object is
 /// recorded in the slot (<see cref="RecordFlip"/>), which keeps every copy's side current, and applied when the object is next
 /// read; only objects that must move are woken.</para>
 /// <para>Slots carry a generation: <see cref="Forget"/> bumps it, so band copies of the slot go stale; a stale copy is dropped
@@ -43,26 +44,26 @@ internal sealed class GateQueue
     public const float ScanTolerance = 0.25f;
 
     private const double Gate = PhysicsGlobals.PlayerActivityDistance;
-    private const byte FromRing = 0, FromBand = 1, FromSlots = 2;
+    private const byte FromRing = 0, FromBand = 1, FromGrid = 2;
     private const long NoFlip = long.MinValue;
 
     // A slot's record, what a hit reads and writes in one cache line: its state (generation << 1 | 1 when beyond 96 m at its
-    // last check), so that liveness and side are one read, and its last two gate crossings since it was queued (tick, side).
-    // It also says where the slot's copy in the band is (index, valid while the band's epoch is unchanged), so that a crossing
-    // updates that copy's side too: every band copy's side stays current, and a ring rebuilt from the band starts current.
+    // last check), so that liveness and side are one read, its last two gate crossings since it was queued (tick, side), and
+    // where its entry is in the grid. The grid entry says where the band holds a copy, so that a crossing updates the sides of
+    // the entry and of that copy too: every copy's side stays current, and a ring rebuilt from the band starts current.
     private struct SlotRecord
     {
         public int State;
-        public int BandIndex, BandEpoch;
+        public int Cell, CellIndex;
         public bool Far, PrevFar;
         public long Tick, PrevTick;
     }
 
-    // Slots: the object, its record, its flags, and its position and side laid out for the rebuild from every slot.
+    // Slots: the object, its record, its flags; the grid holds its position.
     private PhysicsObj?[] _obj = new PhysicsObj?[64];
     private SlotRecord[] _record = new SlotRecord[64];
     private byte[] _flags = new byte[64];
-    private readonly GateSlots _pos = new();
+    private readonly GateGrid _grid = new();
     private int[] _free = new int[64];
     private int _freeCount;
     private int _slotCount;
@@ -81,14 +82,12 @@ internal sealed class GateQueue
     private double _seenX, _seenY, _seenZ;
 
     // A rebuild decided by Advance and done by Finish (after the caller has resolved the hits, so copies take the new sides).
-    private byte _rebuild; // 0 none; FromBand: the ring from the band's selection; FromSlots: both from the slot lists below
-    private int[] _hitSlots = new int[64];
-    private int[] _ringSlots = new int[64];
-    private int _ringSlotCount;
-    private int[] _bandSlots = new int[64];
-    private int _bandSlotCount;
-
-    public GateQueue() => _pos.Grow(_obj.Length);
+    private byte _rebuild; // 0 none; FromBand: the ring from the band's selection; FromGrid: both from the grid's places below
+    private long[] _hitPlaces = new long[64];
+    private long[] _ringPlaces = new long[64];
+    private int _ringPlaceCount;
+    private long[] _bandPlaces = new long[64];
+    private int _bandPlaceCount;
 
     /// <summary>Slots in use plus band copies, stale ones included (bounded by a small multiple of the queued objects).</summary>
     public int EntryCount => _slotCount - _freeCount + _ring.Count + _band.Count;
@@ -123,7 +122,7 @@ internal sealed class GateQueue
             return;
         }
 
-        _pos.Global(h.Slot, out x, out y, out z);
+        _grid.Global(h.Cell, h.Index, out x, out y, out z);
     }
 
     /// <summary>A position's global x, y, z: block offsets are whole multiples of 192 m (as <c>LandDefs::get_block_offset</c>), so
@@ -165,7 +164,7 @@ internal sealed class GateQueue
 
         // The player left the ring. Entries that may have crossed since their last test lie within fromRing of 96 m about the
         // ring's centre; the new ring about the player holds those within RingHalfWidth (+ slack) of 96 m about the player. If
-        // the band holds both sets, the ring is rebuilt from it; otherwise both are rebuilt from every slot.
+        // the band holds both sets, the ring is rebuilt from it; otherwise both are rebuilt from the grid.
         double fromBand = _band.Valid ? _band.DistanceTo(px, py, pz) : double.PositiveInfinity;
         double centres = _ring.Valid && _band.Valid
             ? _band.DistanceTo(_ring.CentreX, _ring.CentreY, _ring.CentreZ)
@@ -180,9 +179,24 @@ internal sealed class GateQueue
             return _band.Scan(px, py, pz, r2, ScanTolerance, FromBand, ref hits, 0, true, (float)(lo * lo), (float)(hi * hi));
         }
 
-        tested = _slotCount;
-        _rebuild = FromSlots;
-        return ScanSlots(seen, ref hits);
+        // Entries that may have crossed lie within fromRing of 96 m about the ring's centre (all, before the first build).
+        _rebuild = FromGrid;
+        int n = _grid.Select(px, py, pz, _ring.CentreX, _ring.CentreY, _ring.CentreZ,
+            _ring.Valid ? fromRing + MemberSlack : double.PositiveInfinity, BandHalfWidth + MemberSlack, RingHalfWidth + MemberSlack,
+            ScanTolerance, ref _hitPlaces, ref _bandPlaces, out _bandPlaceCount, ref _ringPlaces, out _ringPlaceCount, out tested);
+        if (n > hits.Length)
+        {
+            Array.Resize(ref hits, Math.Max(n, hits.Length * 2));
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            int cell = GateGrid.CellOf(_hitPlaces[i]), index = GateGrid.IndexOf(_hitPlaces[i]);
+            ref GateGrid.Entry e = ref _grid.At(cell, index);
+            hits[i] = new GateHit(e.Slot, e.Generation, e.Flags, FromGrid, index, cell);
+        }
+
+        return n;
     }
 
     /// <summary>Ends this tick's <see cref="Advance"/> once its hits are resolved: band copies of the hits take their slots' sides
@@ -217,13 +231,12 @@ internal sealed class GateQueue
             _ring.MarkBuilt();
             _forgottenSinceRing = 0;
         }
-        else if (_rebuild == FromSlots)
+        else if (_rebuild == FromGrid)
         {
-
             _ring.Reset(_seenX, _seenY, _seenZ);
             _band.Reset(_seenX, _seenY, _seenZ);
-            AppendLive(_ring, _ringSlots, _ringSlotCount);
-            AppendLive(_band, _bandSlots, _bandSlotCount);
+            AppendPlaces(_ring, _ringPlaces, _ringPlaceCount);
+            AppendPlaces(_band, _bandPlaces, _bandPlaceCount);
             _ring.MarkBuilt();
             _band.MarkBuilt();
             _forgottenSinceRing = _forgottenSinceBand = 0;
@@ -265,11 +278,11 @@ internal sealed class GateQueue
         _obj[slot] = o;
         ref SlotRecord r = ref _record[slot];
         r.State = (r.State & ~1) | (far ? 1 : 0);
-        r.BandEpoch = _band.Epoch - 1; // no band copy yet
         r.Tick = NoFlip;
         r.PrevTick = NoFlip;
         _flags[slot] = (byte)((idle ? GateFlags.Idle : 0) | (onWalkable ? GateFlags.OnWalkable : 0));
-        _pos.Set(slot, o._position, far);
+        Global(o._position, out double x, out double y, out _);
+        _grid.Add(slot, r.State >> 1, _flags[slot], x, y, o._position.Frame.Origin.Z, far, out r.Cell, out r.CellIndex);
         o._gateQueue = this;
         o._gateSlot = slot;
         AppendIfNear(_ring, slot);
@@ -283,12 +296,12 @@ internal sealed class GateQueue
     {
         ref SlotRecord f = ref _record[slot];
         f.State = (f.State & ~1) | (far ? 1 : 0);
-        if (f.BandEpoch == _band.Epoch)
+        ref GateGrid.Entry e = ref _grid.At(f.Cell, f.CellIndex);
+        e.Side = far ? 1f : -1f;
+        if (e.BandEpoch == _band.Epoch)
         {
-            _band.SetSide(f.BandIndex, far);
+            _band.SetSide(e.BandIndex, far);
         }
-
-        _pos.SetSide(slot, far);
         f.PrevTick = f.Tick;
         f.PrevFar = f.Far;
         f.Tick = tick;
@@ -328,9 +341,15 @@ internal sealed class GateQueue
         }
 
         int slot = o._gateSlot;
-        q._record[slot].State = (((q._record[slot].State >> 1) + 1) << 1) | 1; // next generation; far, so a free slot (x = +inf) is never a hit
+        q._record[slot].State = ((q._record[slot].State >> 1) + 1) << 1; // next generation: its copies are stale
         q._obj[slot] = null;
-        q._pos.Free(slot);
+        ref SlotRecord r = ref q._record[slot];
+        int moved = q._grid.Remove(r.Cell, r.CellIndex);
+        if (moved >= 0)
+        {
+            q._record[moved].CellIndex = r.CellIndex;
+        }
+
         if (q._freeCount == q._free.Length)
         {
             Array.Resize(ref q._free, q._free.Length * 2);
@@ -345,58 +364,48 @@ internal sealed class GateQueue
 
     private GateBand? BandOf(in GateHit h) => h.Band == FromRing ? _ring : h.Band == FromBand ? _band : null;
 
-    /// <summary>Tests every slot (one SIMD pass): the hits, and the members of the ring and band about the player.</summary>
-    private int ScanSlots(in Position seen, ref GateHit[] hits)
-    {
-        int n = _pos.Scan(seen, _slotCount, (float)(Gate * Gate), ScanTolerance,
-            SqF(Gate - RingHalfWidth - MemberSlack), SqF(Gate + RingHalfWidth + MemberSlack),
-            SqF(Gate - BandHalfWidth - MemberSlack), SqF(Gate + BandHalfWidth + MemberSlack),
-            ref _hitSlots, ref _ringSlots, out _ringSlotCount, ref _bandSlots, out _bandSlotCount);
-        if (n > hits.Length)
-        {
-            Array.Resize(ref hits, Math.Max(n, hits.Length * 2));
-        }
-
-        for (int i = 0; i < n; i++)
-        {
-            int s = _hitSlots[i];
-            hits[i] = new GateHit(s, _record[s].State >> 1, _flags[s], FromSlots, s);
-        }
-
-        return n;
-    }
-
-    private static float SqF(double v) => (float)(Math.Max(0.0, v) * Math.Max(0.0, v));
-
-    private void AppendLive(GateBand band, int[] slots, int count)
+    private void AppendPlaces(GateBand band, long[] places, int count)
     {
         for (int i = 0; i < count; i++)
         {
-            int s = slots[i];
-            _pos.Global(s, out double x, out double y, out double z); // (a free slot is never selected)
-            Appended(band, s, band.Append(s, _record[s].State >> 1, _flags[s], x, y, z, IsFar(s)));
+            AppendPlace(band, GateGrid.CellOf(places[i]), GateGrid.IndexOf(places[i]));
+        }
+    }
+
+    private void AppendPlace(GateBand band, int cell, int index)
+    {
+        ref GateGrid.Entry e = ref _grid.At(cell, index);
+        _grid.Global(cell, index, out double x, out double y, out double z);
+        int at = band.Append(e.Slot, e.Generation, e.Flags, x, y, z, e.Side > 0f);
+        if (band == _band)
+        {
+            e.BandIndex = at;
+            e.BandEpoch = band.Epoch;
         }
     }
 
     /// <summary>A band's entry for a slot's object has moved to <paramref name="index"/> (the band is compacting).</summary>
-    internal void Moved(GateBand band, int slot, int index) => Appended(band, slot, index);
-
-    private void Appended(GateBand band, int slot, int index)
+    internal void Moved(GateBand band, int slot, int index)
     {
         if (band == _band)
         {
             ref SlotRecord r = ref _record[slot];
-            r.BandIndex = index;
-            r.BandEpoch = band.Epoch;
+            ref GateGrid.Entry e = ref _grid.At(r.Cell, r.CellIndex);
+            e.BandIndex = index;
+            e.BandEpoch = band.Epoch;
         }
     }
 
     private void AppendIfNear(GateBand band, int slot)
     {
-        _pos.Global(slot, out double x, out double y, out double z);
-        if (band.Valid && Math.Abs(band.DistanceTo(x, y, z) - Gate) < band.HalfWidth + MemberSlack)
+        ref SlotRecord r = ref _record[slot];
+        if (band.Valid)
         {
-            Appended(band, slot, band.Append(slot, _record[slot].State >> 1, _flags[slot], x, y, z, IsFar(slot)));
+            _grid.Global(r.Cell, r.CellIndex, out double x, out double y, out double z);
+            if (Math.Abs(band.DistanceTo(x, y, z) - Gate) < band.HalfWidth + MemberSlack)
+            {
+                AppendPlace(band, r.Cell, r.CellIndex);
+            }
         }
     }
 
@@ -406,7 +415,6 @@ internal sealed class GateQueue
         Array.Resize(ref _obj, size);
         Array.Resize(ref _record, size);
         Array.Resize(ref _flags, size);
-        _pos.Grow(size);
     }
 }
 
