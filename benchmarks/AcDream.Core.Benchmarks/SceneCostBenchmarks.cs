@@ -25,6 +25,12 @@ public class SceneRestingObjectsBenchmarks
     /// <summary>The scene's world (for the in-process comparison, <c>scene-ab</c>).</summary>
     internal PhysicsWorld World => _world;
 
+    /// <summary>The walking player's speed, m/s (2 as the other movers; <c>scene-ab --speed</c> sets a runner's). A line leg
+    /// stays 51 m long whatever the speed.</summary>
+    internal float PlayerSpeed { get; set; } = 2f;
+
+    private int LineLegTicks => System.Math.Max(1, (int)System.Math.Round(51.0 / (PlayerSpeed * 0.034)));
+
     /// <summary>Number of resting or static objects besides the 100 movers.</summary>
     [Params(0, 10_000, 100_000)]
     public int Resting { get; set; }
@@ -52,6 +58,10 @@ public class SceneRestingObjectsBenchmarks
         if (Player == PlayerPath.Still)
         {
             ((SimplePartArray)_movers[0].PartArray!).SequenceVelocity = System.Numerics.Vector3.Zero;
+        }
+        else
+        {
+            ((SimplePartArray)_movers[0].PartArray!).SequenceVelocity = new System.Numerics.Vector3(0f, PlayerSpeed, 0f);
         }
 
         for (int i = 0; i < Resting; i++)
@@ -97,9 +107,9 @@ public class SceneRestingObjectsBenchmarks
             }
         }
 
-        if (Player == PlayerPath.Line && _tick % 750 == 0)
+        if (Player == PlayerPath.Line && _tick % LineLegTicks == 0)
         {
-            _movers[0].SetHeading(_tick / 750 % 2 == 0 ? 90f : 270f); // 51 m east, then back west
+            _movers[0].SetHeading(_tick / LineLegTicks % 2 == 0 ? 90f : 270f); // 51 m east, then back west
         }
 
         _tick++;

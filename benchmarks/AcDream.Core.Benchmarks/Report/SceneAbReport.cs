@@ -12,7 +12,8 @@ namespace AcDream.Core.Benchmarks.Report;
 /// per-round ratios, both medians, the gate statistics per tick and the bytes allocated per tick.
 /// </summary>
 /// <remarks>Options: <c>--path square|line|still</c> (default square), <c>--gate exact|moving</c> (default exact),
-/// <c>--rounds N</c> (default 41), <c>--warm N</c> (world ticks before measuring, default 3,000).</remarks>
+/// <c>--speed M</c> (the player's speed in m/s, default 2: a runner is about 12), <c>--rounds N</c> (default 41),
+/// <c>--warm N</c> (world ticks before measuring, default 3,000).</remarks>
 public static class SceneAbReport
 {
     /// <summary>Runs the comparison and prints the figures; returns 0, or 2 on a bad option.</summary>
@@ -21,6 +22,7 @@ public static class SceneAbReport
         var path = PlayerPath.Square;
         var gate = GateTracking.Exact;
         int rounds = 41, warm = 3000;
+        float speed = 2f;
         for (int i = 0; i < args.Length; i++)
         {
             string value = i + 1 < args.Length ? args[i + 1] : "";
@@ -32,6 +34,10 @@ public static class SceneAbReport
                     break;
                 case "--gate" when value is "exact" or "moving":
                     gate = value == "exact" ? GateTracking.Exact : GateTracking.MovingObjectsOnly;
+                    i++;
+                    break;
+                case "--speed" when float.TryParse(value, System.Globalization.CultureInfo.InvariantCulture, out float v) && v > 0f && v <= 50f:
+                    speed = v;
                     i++;
                     break;
                 case "--rounds" when int.TryParse(value, out int r) && r > 0:
@@ -48,8 +54,8 @@ public static class SceneAbReport
             }
         }
 
-        var none = new SceneRestingObjectsBenchmarks { Resting = 0, Gate = gate, Player = path };
-        var many = new SceneRestingObjectsBenchmarks { Resting = 100_000, Gate = gate, Player = path };
+        var none = new SceneRestingObjectsBenchmarks { Resting = 0, Gate = gate, Player = path, PlayerSpeed = speed };
+        var many = new SceneRestingObjectsBenchmarks { Resting = 100_000, Gate = gate, Player = path, PlayerSpeed = speed };
         none.Setup();
         many.Setup();
         for (int i = 0; i < warm / 10; i++)
@@ -76,7 +82,7 @@ public static class SceneAbReport
         Array.Sort(a);
         Array.Sort(b);
         Array.Sort(ratio);
-        Console.WriteLine($"scene-ab: player {path}, gate {gate}, {rounds} rounds of 1,000 world ticks each");
+        Console.WriteLine($"scene-ab: player {path} at {speed:0.#} m/s, gate {gate}, {rounds} rounds of 1,000 world ticks each");
         Console.WriteLine($"  median per tick: 0 resting {a[rounds / 2]:F2} us, 100,000 resting {b[rounds / 2]:F2} us");
         Console.WriteLine($"  ratio: median {ratio[rounds / 2]:F3}, quartiles {ratio[rounds / 4]:F3} .. {ratio[rounds * 3 / 4]:F3}");
         Console.WriteLine($"  gate per tick: {(after.Remeasures - before.Remeasures) / ticks:F1} re-measured, "
