@@ -65,10 +65,29 @@ public class GateQueueTests
                     continue;
                 }
 
-                bool far = IsFar(queue.Object(h.Slot), player);
+                PhysicsObj hit = queue.Object(h.Slot);
+                bool far = IsFar(hit, player);
                 if (far != queue.IsFar(h.Slot))
                 {
+                    if (rng.Next(8) == 0)
+                    {
+                        // A crossing that wakes its object (a mover): it leaves the queue in the middle of the resolution.
+                        GateQueue.Forget(hit);
+                        queued.Remove(hit);
+                        continue;
+                    }
+
                     queue.RecordFlip(h.Slot, step, far);
+                }
+
+                if (rng.Next(50) == 0 && queued.Count > 0)
+                {
+                    // Something else wakes meanwhile (a listener kicks an object), wherever it is.
+                    PhysicsObj other = objects[rng.Next(objects.Count)];
+                    if (queued.Remove(other))
+                    {
+                        GateQueue.Forget(other);
+                    }
                 }
             }
 

@@ -9,8 +9,9 @@ namespace AcDream.Core.Physics;
 /// </summary>
 /// <remarks>
 /// Cells are found by a hash of their coordinates (open addressing; allocation only when it grows). A cell keeps its entries in
-/// an array (removal moves the last one into the gap) and the z range they have had, so that a cell wholly inside or outside
-/// an annulus is skipped in 3D. Entry positions are float offsets from the cell's corner (x, y, within 1e-6 m) and the float z
+/// an array and the z range they have had, so that a cell wholly inside or outside an annulus is skipped in 3D. A removed entry
+/// is only marked dead (slot −1) and its cell listed; <see cref="Sweep"/> closes the gaps later, at a moment when no place
+/// taken by <see cref="Select"/> is still in use (the queue sweeps at the start of each test). Entry positions are float offsets from the cell's corner (x, y, within 1e-6 m) and the float z
 /// the object's position holds.
 /// </remarks>
 internal sealed class GateGrid
@@ -34,6 +35,7 @@ internal sealed class GateGrid
         public Entry[] Entries;
         public int Count;
         public float ZMin, ZMax;
+        public bool Dirty; // holds dead entries
     }
 
     private Cell[] _cells = new Cell[16];
@@ -41,6 +43,8 @@ internal sealed class GateGrid
     private long[] _keys = new long[64];
     private int[] _cellAt = new int[64]; // -1 empty
     private int _entryCount;
+    private int[] _dirty = new int[16];
+    private int _dirtyCount;
 
     public GateGrid() => Array.Fill(_cellAt, -1);
 
@@ -88,19 +92,54 @@ internal sealed class GateGrid
         _entryCount++;
     }
 
-    /// <summary>Removes the entry at a place; the cell's last entry moves into the gap: returns its slot (−1 when none moved).</summary>
-    public int Remove(int cell, int index)
+    /// <summary>Removes the entry at a place: marks it dead (never selected) until the next <see cref="Sweep"/>.</summary>
+    public void Remove(int cell, int index)
     {
         ref Cell c = ref _cells[cell];
-        int last = --c.Count;
+        c.Entries[index].Slot = -1;
         _entryCount--;
-        if (index == last)
+        if (!c.Dirty)
         {
-            return -1;
+            c.Dirty = true;
+            if (_dirtyCount == _dirty.Length)
+            {
+                Array.Resize(ref _dirty, _dirtyCount * 2);
+            }
+
+            _dirty[_dirtyCount++] = cell;
+        }
+    }
+
+    /// <summary>Closes the gaps dead entries left, keeping the order of the live ones, and tells the queue where each moved entry
+    /// now is (<see cref="GateQueue.EntryMoved"/>).</summary>
+    public void Sweep(GateQueue queue)
+    {
+        for (int d = 0; d < _dirtyCount; d++)
+        {
+            int cell = _dirty[d];
+            ref Cell c = ref _cells[cell];
+            int w = 0;
+            for (int i = 0; i < c.Count; i++)
+            {
+                if (c.Entries[i].Slot < 0)
+                {
+                    continue;
+                }
+
+                if (w != i)
+                {
+                    c.Entries[w] = c.Entries[i];
+                    queue.EntryMoved(c.Entries[w].Slot, w);
+                }
+
+                w++;
+            }
+
+            c.Count = w;
+            c.Dirty = false;
         }
 
-        c.Entries[index] = c.Entries[last];
-        return c.Entries[index].Slot;
+        _dirtyCount = 0;
     }
 
     /// <summary>
@@ -135,6 +174,11 @@ internal sealed class GateGrid
             for (int i = 0; i < c.Count; i++)
             {
                 ref Entry e = ref c.Entries[i];
+                if (e.Slot < 0)
+                {
+                    continue; // dead
+                }
+
                 double dx = ox + e.X, dy = oy + e.Y, dz = e.Z - pz;
                 double d2 = dx * dx + dy * dy + dz * dz;
                 if (e.Side * (d2 - gate * gate) < tolerance)

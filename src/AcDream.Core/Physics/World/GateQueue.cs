@@ -149,6 +149,7 @@ internal sealed class GateQueue
             return 0;
         }
 
+        _grid.Sweep(this); // (only here: the places Select hands out stay valid until Finish, whatever is forgotten meanwhile)
         _hasSeen = true;
         _seenCell = seen.ObjCellId;
         _seenOrigin = seen.Frame.Origin;
@@ -343,12 +344,7 @@ internal sealed class GateQueue
         int slot = o._gateSlot;
         q._record[slot].State = ((q._record[slot].State >> 1) + 1) << 1; // next generation: its copies are stale
         q._obj[slot] = null;
-        ref SlotRecord r = ref q._record[slot];
-        int moved = q._grid.Remove(r.Cell, r.CellIndex);
-        if (moved >= 0)
-        {
-            q._record[moved].CellIndex = r.CellIndex;
-        }
+        q._grid.Remove(q._record[slot].Cell, q._record[slot].CellIndex);
 
         if (q._freeCount == q._free.Length)
         {
@@ -375,6 +371,11 @@ internal sealed class GateQueue
     private void AppendPlace(GateBand band, int cell, int index)
     {
         ref GateGrid.Entry e = ref _grid.At(cell, index);
+        if (e.Slot < 0)
+        {
+            return; // forgotten since it was selected
+        }
+
         _grid.Global(cell, index, out double x, out double y, out double z);
         int at = band.Append(e.Slot, e.Generation, e.Flags, x, y, z, e.Side > 0f);
         if (band == _band)
@@ -383,6 +384,9 @@ internal sealed class GateQueue
             e.BandEpoch = band.Epoch;
         }
     }
+
+    /// <summary>A slot's grid entry has moved to <paramref name="index"/> in its cell (the grid is sweeping).</summary>
+    internal void EntryMoved(int slot, int index) => _record[slot].CellIndex = index;
 
     /// <summary>A band's entry for a slot's object has moved to <paramref name="index"/> (the band is compacting).</summary>
     internal void Moved(GateBand band, int slot, int index)
