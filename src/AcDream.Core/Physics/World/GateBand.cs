@@ -15,10 +15,11 @@ namespace AcDream.Core.Physics;
 /// The scan is a conservative filter, never the decision: for a player at offset <c>p</c> from the centre it flags every entry
 /// whose squared distance <c>d²</c> satisfies <c>side·(d² − 96²) &lt; tolerance</c> — every entry that may have crossed, plus those
 /// within the tolerance of 96 m on their own side. The caller decides each flagged entry in double precision (and with retail's
-/// own arithmetic near the boundary). Float rounding of the relative coordinates (|x| ≲ 120 m) moves <c>d²</c> by a few
+/// own arithmetic near the boundary). Float rounding of the relative coordinates (|x| ≲ 110 m) moves <c>d²</c> by a few
 /// thousandths of a square metre, far inside the tolerances the queue uses. Entries past <see cref="Count"/> up to the array
 /// length are dead: an infinite x and side +1, which no test ever flags. The loop works on 8 entries at a time
-/// (<see cref="Vector256{T}"/>: one AVX instruction each on x64, two 128-bit ones elsewhere) and makes no call, so its
+/// (<see cref="Vector256{T}"/>: one AVX instruction each on x64 with AVX; .NET's element-wise fallback elsewhere, with the same
+/// results) and makes no call, so its
 /// constants stay in registers; it records which groups of 8 have flagged (or member) entries, and their lane masks, for a
 /// second pass that only touches those.
 /// </remarks>

@@ -11,8 +11,8 @@ namespace AcDream.Core.Physics;
 /// Cells are found by a hash of their coordinates (open addressing; allocation only when it grows). A cell keeps its entries in
 /// an array and the z range they have had, so that a cell wholly inside or outside an annulus is skipped in 3D. A removed entry
 /// is only marked dead (slot −1) and its cell listed; <see cref="Sweep"/> closes the gaps later, at a moment when no place
-/// taken by <see cref="Select"/> is still in use (the queue sweeps at the start of each test). Entry positions are float offsets from the cell's corner (x, y, within 1e-6 m) and the float z
-/// the object's position holds.
+/// taken by <see cref="Select"/> is still in use (the queue sweeps at the end of each tick's test, <see cref="GateQueue.Finish"/>). Entry positions are float offsets
+/// from the cell's corner (x, y, within 1e-6 m) and the float z the object's position holds.
 /// </remarks>
 internal sealed class GateGrid
 {
@@ -42,14 +42,13 @@ internal sealed class GateGrid
     private int _cellCount;
     private long[] _keys = new long[64];
     private int[] _cellAt = new int[64]; // -1 empty
-    private int _entryCount;
     private int[] _dirty = new int[16];
     private int _dirtyCount;
 
-    public GateGrid() => Array.Fill(_cellAt, -1);
+    /// <summary>Entries held, dead ones not yet swept included.</summary>
+    public int Held { get; private set; }
 
-    /// <summary>Entries held.</summary>
-    public int Count => _entryCount;
+    public GateGrid() => Array.Fill(_cellAt, -1);
 
     /// <summary>The entry at a place.</summary>
     public ref Entry At(int cell, int index) => ref _cells[cell].Entries[index];
@@ -76,6 +75,7 @@ internal sealed class GateGrid
         }
 
         index = c.Count++;
+        Held++;
         c.Entries[index] = new Entry
         {
             Slot = slot,
@@ -89,7 +89,6 @@ internal sealed class GateGrid
         };
         c.ZMin = Math.Min(c.ZMin, z);
         c.ZMax = Math.Max(c.ZMax, z);
-        _entryCount++;
     }
 
     /// <summary>Removes the entry at a place: marks it dead (never selected) until the next <see cref="Sweep"/>.</summary>
@@ -97,7 +96,6 @@ internal sealed class GateGrid
     {
         ref Cell c = ref _cells[cell];
         c.Entries[index].Slot = -1;
-        _entryCount--;
         if (!c.Dirty)
         {
             c.Dirty = true;
@@ -135,6 +133,7 @@ internal sealed class GateGrid
                 w++;
             }
 
+            Held -= c.Count - w;
             c.Count = w;
             c.Dirty = false;
         }

@@ -89,8 +89,8 @@ internal sealed class GateQueue
     private long[] _bandPlaces = new long[64];
     private int _bandPlaceCount;
 
-    /// <summary>Slots in use plus band copies, stale ones included (bounded by a small multiple of the queued objects).</summary>
-    public int EntryCount => _slotCount - _freeCount + _ring.Count + _band.Count;
+    /// <summary>Grid entries and band copies, dead and stale ones included (bounded by a small multiple of the queued objects).</summary>
+    public int EntryCount => _grid.Held + _ring.Count + _band.Count;
 
     /// <summary>The player position of this tick's <see cref="Advance"/> (global).</summary>
     public void Seen(out double x, out double y, out double z)
@@ -149,7 +149,6 @@ internal sealed class GateQueue
             return 0;
         }
 
-        _grid.Sweep(this); // (only here: the places Select hands out stay valid until Finish, whatever is forgotten meanwhile)
         _hasSeen = true;
         _seenCell = seen.ObjCellId;
         _seenOrigin = seen.Frame.Origin;
@@ -244,6 +243,7 @@ internal sealed class GateQueue
         }
 
         _rebuild = 0;
+        _grid.Sweep(this); // only here: the places a rebuild selected stay valid until now, whatever was forgotten meanwhile
         if (_forgottenSinceRing * 4 > _ring.CountAtBuild + 64 || _ring.Count > 2 * _ring.CountAtBuild + 64)
         {
             _ring.Compact(this);
