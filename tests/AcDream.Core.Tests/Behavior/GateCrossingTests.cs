@@ -320,6 +320,40 @@ public class GateCrossingTests
     }
 
     [Fact]
+    public void GateTracking_WithAWalkingPlayerAndObjectsWakingAndSleeping_AllocatesNothingOnceGrown()
+    {
+        // The per-tick path of the gate (ring scans, crossings, ring and band rebuilds, grid sweeps), with objects woken and
+        // falling asleep again all the while: once its arrays have grown, a lap of the player's square allocates nothing.
+        var w = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        PhysicsObj player = SceneTestContext.Add(w, 1u, SceneTestContext.At(96f, 96f));
+        var items = new PhysicsObj[600];
+        for (int k = 0; k < items.Length; k++)
+        {
+            items[k] = SceneTestContext.Add(w, 100u + (uint)k, SceneTestContext.At(-20f + (k % 30) * 8f, -20f + (k / 30) * 8f));
+        }
+
+        w.Player = player;
+        double t = 0.0;
+        int tick = 0;
+        void Run(int ticks)
+        {
+            for (int i = 0; i < ticks; i++)
+            {
+                tick++;
+                float h = (tick / 40 % 4) * MathF.PI / 2f;
+                player.SetVelocity(new Vector3(3f * MathF.Sin(h), 3f * MathF.Cos(h), 0f));
+                items[tick * 7 % items.Length].SetVelocity(new Vector3(0.6f, 0f, 0f));
+                t += 1.0 / 30.0;
+                w.Tick(t);
+            }
+        }
+
+        Run(3200);
+        Assert.True(w.GateFlips > 0 && w.DormantCount > 500, $"flips {w.GateFlips} dormant {w.DormantCount}");
+        AllocationProbe.AssertSteadyStateAllocatesNothing(() => Run(160));
+    }
+
+    [Fact]
     public void StillPlayer_ReMeasuresNothing()
     {
         var w = new PhysicsWorld(50.0);
