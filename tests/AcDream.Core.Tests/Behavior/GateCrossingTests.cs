@@ -212,11 +212,7 @@ public class GateCrossingTests
             }
         }
 
-        var full = new PhysicsWorld(10.0) { VisitEveryObject = true };
-        var hashes = new ulong[301];
-        Run(full, (tick, w) => hashes[tick] = SceneTestContext.HashWorld(w));
-        var scene = new PhysicsWorld(10.0);
-        Run(scene, (tick, w) => Assert.True(hashes[tick] == SceneTestContext.HashWorld(w), $"tick {tick}"));
+        PhysicsWorld scene = AssertTickByTickAsVisitingEveryObject(10.0, 300, Run);
         Assert.True(scene.GateFlips > 20, $"flips {scene.GateFlips} remeasures {scene.GateRemeasures} wakes {scene.GateWakes} dormant {scene.DormantCount}");
         Assert.True(scene.DormantCount >= 35, $"dormant {scene.DormantCount}");
     }
@@ -254,11 +250,7 @@ public class GateCrossingTests
             }
         }
 
-        var full = new PhysicsWorld(20.0) { VisitEveryObject = true };
-        var hashes = new ulong[201];
-        Run(full, (tick, w) => hashes[tick] = SceneTestContext.HashWorld(w));
-        var scene = new PhysicsWorld(20.0);
-        Run(scene, (tick, w) => Assert.True(hashes[tick] == SceneTestContext.HashWorld(w), $"tick {tick}"));
+        PhysicsWorld scene = AssertTickByTickAsVisitingEveryObject(20.0, 200, Run);
         Assert.True(scene.DormantCount > 200, $"dormant {scene.DormantCount}");
     }
 
@@ -291,32 +283,20 @@ public class GateCrossingTests
         // Objects kicked awake every few ticks leave dead grid entries and stale band copies behind in the gate queues each time
         // they fall asleep again; the queues drop them (grid cells swept every tick, copies when met or by compaction), so a long
         // walk, or a long wait, keeps them bounded.
-        var w = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
-        PhysicsObj player = SceneTestContext.Add(w, 1u, SceneTestContext.At(96f, 96f));
-        var items = new PhysicsObj[600];
-        for (int k = 0; k < items.Length; k++)
-        {
-            items[k] = SceneTestContext.Add(w, 100u + (uint)k, SceneTestContext.At(-20f + (k % 30) * 8f, -20f + (k / 30) * 8f));
-        }
-
-        w.Player = player;
-        double t = 0.0;
+        var churn = new ChurnScene();
         int maxEntries = 0;
         for (int tick = 1; tick <= 3000; tick++)
         {
-            float h = (tick / 40 % 4) * MathF.PI / 2f;
-            player.SetVelocity(playerWalks ? new Vector3(3f * MathF.Sin(h), 3f * MathF.Cos(h), 0f) : Vector3.Zero);
-            items[tick * 7 % items.Length].SetVelocity(new Vector3(0.6f, 0f, 0f)); // wakes; it slides to rest and sleeps again
-            t += 1.0 / 30.0;
-            w.Tick(t);
+            churn.Step(playerWalks);
             if (tick > 100)
             {
-                maxEntries = Math.Max(maxEntries, w.GateEntryCount);
+                maxEntries = Math.Max(maxEntries, churn.World.GateEntryCount);
             }
         }
 
+        PhysicsWorld w = churn.World;
         Assert.True(w.DormantCount > 500, $"dormant {w.DormantCount}");
-        Assert.True(maxEntries <= 2 * items.Length + 1100, $"entries up to {maxEntries} for {items.Length} objects");
+        Assert.True(maxEntries <= 2 * ChurnScene.Items + 1100, $"entries up to {maxEntries} for {ChurnScene.Items} objects");
     }
 
     [Fact]
@@ -324,31 +304,17 @@ public class GateCrossingTests
     {
         // The per-tick path of the gate (ring scans, crossings, ring and band rebuilds, grid sweeps), with objects woken and
         // falling asleep again all the while: once its arrays have grown, a lap of the player's square allocates nothing.
-        var w = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
-        PhysicsObj player = SceneTestContext.Add(w, 1u, SceneTestContext.At(96f, 96f));
-        var items = new PhysicsObj[600];
-        for (int k = 0; k < items.Length; k++)
-        {
-            items[k] = SceneTestContext.Add(w, 100u + (uint)k, SceneTestContext.At(-20f + (k % 30) * 8f, -20f + (k / 30) * 8f));
-        }
-
-        w.Player = player;
-        double t = 0.0;
-        int tick = 0;
+        var churn = new ChurnScene();
         void Run(int ticks)
         {
             for (int i = 0; i < ticks; i++)
             {
-                tick++;
-                float h = (tick / 40 % 4) * MathF.PI / 2f;
-                player.SetVelocity(new Vector3(3f * MathF.Sin(h), 3f * MathF.Cos(h), 0f));
-                items[tick * 7 % items.Length].SetVelocity(new Vector3(0.6f, 0f, 0f));
-                t += 1.0 / 30.0;
-                w.Tick(t);
+                churn.Step(playerWalks: true);
             }
         }
 
         Run(3200);
+        PhysicsWorld w = churn.World;
         Assert.True(w.GateFlips > 0 && w.DormantCount > 500, $"flips {w.GateFlips} dormant {w.DormantCount}");
         AllocationProbe.AssertSteadyStateAllocatesNothing(() => Run(160));
     }
@@ -408,6 +374,53 @@ public class GateCrossingTests
         }
 
         Assert.True(w.GateRemeasures > settled + 100, $"straight walk re-measured {w.GateRemeasures - settled}, player at {player.Position.Frame.Origin} cell {player.CellId:X8} flips {w.GateFlips} wakes {w.GateWakes} dormant {w.DormantCount}");
+    }
+
+    /// <summary>Runs a scene twice, visiting every object and as a scene, and asserts the two are bit-identical after every tick;
+    /// returns the scene world.</summary>
+    private static PhysicsWorld AssertTickByTickAsVisitingEveryObject(double start, int ticks,
+        Action<PhysicsWorld, Action<int, PhysicsWorld>> run)
+    {
+        var hashes = new ulong[ticks + 1];
+        run(new PhysicsWorld(start) { VisitEveryObject = true }, (tick, w) => hashes[tick] = SceneTestContext.HashWorld(w));
+        var scene = new PhysicsWorld(start);
+        run(scene, (tick, w) => Assert.True(hashes[tick] == SceneTestContext.HashWorld(w), $"tick {tick}"));
+        return scene;
+    }
+
+    /// <summary>A player at (96, 96) among 600 items on an 8 m grid; each tick it walks a 4 m square at 3 m/s (or stands) and one
+    /// item is kicked awake, slides to rest and falls asleep again.</summary>
+    private sealed class ChurnScene
+    {
+        public const int Items = 600;
+        private readonly PhysicsObj _player;
+        private readonly PhysicsObj[] _items = new PhysicsObj[Items];
+        private double _time;
+        private int _tick;
+
+        public ChurnScene()
+        {
+            World = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+            _player = SceneTestContext.Add(World, 1u, SceneTestContext.At(96f, 96f));
+            for (int k = 0; k < Items; k++)
+            {
+                _items[k] = SceneTestContext.Add(World, 100u + (uint)k, SceneTestContext.At(-20f + (k % 30) * 8f, -20f + (k / 30) * 8f));
+            }
+
+            World.Player = _player;
+        }
+
+        public PhysicsWorld World { get; }
+
+        public void Step(bool playerWalks)
+        {
+            _tick++;
+            float h = (_tick / 40 % 4) * MathF.PI / 2f;
+            _player.SetVelocity(playerWalks ? new Vector3(3f * MathF.Sin(h), 3f * MathF.Cos(h), 0f) : Vector3.Zero);
+            _items[_tick * 7 % Items].SetVelocity(new Vector3(0.6f, 0f, 0f)); // wakes; it slides to rest and sleeps again
+            _time += 1.0 / 30.0;
+            World.Tick(_time);
+        }
     }
 
     /// <summary>Hashes, in the middle of the tick, the bookkeeping of objects not yet visited: at each step of the observer, those
