@@ -1,5 +1,6 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.World;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;

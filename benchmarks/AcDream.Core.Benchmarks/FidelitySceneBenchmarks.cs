@@ -1,7 +1,10 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Benchmarks.Report;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;

@@ -1,5 +1,9 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Scene;
+using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Replay.Harness;
 using BenchmarkDotNet.Attributes;
 

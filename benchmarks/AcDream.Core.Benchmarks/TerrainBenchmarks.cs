@@ -1,7 +1,10 @@
 using System;
 using System.IO;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Terrain;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;

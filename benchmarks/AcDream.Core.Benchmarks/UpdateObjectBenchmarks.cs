@@ -1,5 +1,8 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.World;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;

@@ -1,7 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Terrain;
 using Xunit;
 
 namespace AcDream.Core.Tests;

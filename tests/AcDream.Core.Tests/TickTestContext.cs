@@ -1,6 +1,10 @@
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.World;
 using Xunit;
-using AcDream.Core.Physics;
 
 namespace AcDream.Core.Tests;
 

@@ -1,7 +1,9 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Benchmarks.Report;
 

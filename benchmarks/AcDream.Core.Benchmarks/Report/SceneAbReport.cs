@@ -1,6 +1,6 @@
 using System;
 using System.Diagnostics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Scene;
 
 namespace AcDream.Core.Benchmarks.Report;
 

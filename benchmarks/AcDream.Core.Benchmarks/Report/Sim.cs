@@ -1,6 +1,9 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Benchmarks.Report;
 

@@ -1,9 +1,9 @@
 using System;
-using System.Collections.Generic;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Collision.Bsp;
+using AcDream.Core.Physics.Collision.Primitives;
 using Xunit;
-using Plane = AcDream.Core.Physics.Plane;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Tests.Behavior;
 

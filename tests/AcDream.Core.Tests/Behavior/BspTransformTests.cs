@@ -1,7 +1,11 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.World;
 using Xunit;
 
 namespace AcDream.Core.Tests.Behavior;

@@ -1,7 +1,16 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Objects.Seams;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Tests.Behavior;
 

@@ -1,5 +1,6 @@
 using System;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision.Bsp;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

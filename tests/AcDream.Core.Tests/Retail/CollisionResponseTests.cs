@@ -1,8 +1,15 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Behavior;
 using Xunit;
-using Plane = AcDream.Core.Physics.Plane;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Tests.Retail;
 

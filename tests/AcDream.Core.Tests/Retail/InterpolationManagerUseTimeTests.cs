@@ -1,5 +1,6 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Managers;
+using AcDream.Core.Physics.Math;
 using AcDream.Core.Tests.Replay.Harness;
 using Xunit;
 

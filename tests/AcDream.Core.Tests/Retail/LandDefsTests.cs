@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

@@ -1,5 +1,9 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Hooks;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Objects.Seams;
+using AcDream.Core.Physics.World;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

@@ -1,5 +1,6 @@
 using System;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Terrain;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

@@ -1,5 +1,7 @@
 using System;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Collision.Sweep;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

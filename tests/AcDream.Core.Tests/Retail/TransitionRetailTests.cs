@@ -1,8 +1,11 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
 using Xunit;
-using Plane = AcDream.Core.Physics.Plane;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Tests.Retail;
 

@@ -1,5 +1,7 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.World;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

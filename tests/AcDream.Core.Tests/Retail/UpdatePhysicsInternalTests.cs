@@ -1,6 +1,10 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Seams;
+using AcDream.Core.Physics.World;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

@@ -1,5 +1,6 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

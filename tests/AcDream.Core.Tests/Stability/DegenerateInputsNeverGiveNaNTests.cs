@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
 using Xunit;
 
 namespace AcDream.Core.Tests.Stability;

@@ -1,6 +1,11 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Behavior;
 using FsCheck;
 using FsCheck.Fluent;

@@ -1,6 +1,8 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Terrain;
 using Xunit;
 
 namespace AcDream.Core.Tests.Stability;

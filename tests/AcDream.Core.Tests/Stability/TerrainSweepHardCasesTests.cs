@@ -1,6 +1,10 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Behavior;
 using Xunit;
 

@@ -1,7 +1,10 @@
 using System;
 using System.Globalization;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Benchmarks.Report;
 

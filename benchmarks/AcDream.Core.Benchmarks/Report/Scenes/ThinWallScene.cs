@@ -2,7 +2,15 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision.Bsp;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Benchmarks.Report;
 

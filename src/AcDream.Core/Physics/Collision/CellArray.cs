@@ -1,6 +1,7 @@
 using System;
+using AcDream.Core.Physics.Cells;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 /// <summary>One entry of a <see cref="CellArray"/>: a cell id and the cell, which is null when it is not loaded. Retail: <c>CELLINFO</c> (acclient.h:31925).</summary>
 public struct CellInfo

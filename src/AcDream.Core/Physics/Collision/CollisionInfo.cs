@@ -1,7 +1,10 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 /// <summary>
 /// What a sweep has touched: the contact plane it stands on (and the last one known), the sliding normal it moves along,

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.Objects;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 /// <summary>
 /// What an object reports when it runs into the environment (terrain, walls) or lands. Retail:

@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 /// <summary>
 /// How the sphere path is being inserted into the world. Retail: <c>enum SPHEREPATH::InsertType</c> (acclient.h:6160).

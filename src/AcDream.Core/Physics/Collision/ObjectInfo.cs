@@ -1,6 +1,10 @@
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 /// <summary>
 /// The moving object as the sweep sees it: its state bits, scale and step heights. Retail: <c>OBJECTINFO</c>

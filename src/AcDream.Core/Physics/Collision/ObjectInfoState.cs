@@ -1,6 +1,6 @@
 using System;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 /// <summary>
 /// What the sweep knows about the moving object. Retail: <c>enum ObjectInfoEnum</c> (acclient.h:6180), the

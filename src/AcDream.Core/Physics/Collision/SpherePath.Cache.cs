@@ -1,6 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 public sealed partial class SpherePath
 {

@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 public sealed partial class SpherePath
 {

@@ -1,7 +1,10 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 /// <summary>
 /// The moving spheres of one sweep and every position the sweep keeps: where it began, where it is (the last valid

@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Math;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 public sealed partial class Transition
 {

@@ -1,6 +1,11 @@
 using System.Numerics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 public sealed partial class Transition
 {

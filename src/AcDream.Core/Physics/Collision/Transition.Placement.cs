@@ -1,7 +1,8 @@
-using System;
 using System.Numerics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 public sealed partial class Transition
 {
@@ -136,7 +137,7 @@ public sealed partial class Transition
             return false;
         }
 
-        double ceilSteps = Math.Ceiling(steps);
+        double ceilSteps = System.Math.Ceiling(steps);
         float distPerStep = (float)(adjustRad / ceilSteps);
         uint numSteps = unchecked((uint)(ulong)ceilSteps);
         float distance = 0f;
@@ -147,7 +148,7 @@ public sealed partial class Transition
             distance += distPerStep;
             double radial = (double)radialPerStep + adjust;
             adjust = (float)radial;
-            uint numRad = 2u * unchecked((uint)(ulong)Math.Ceiling(radial));
+            uint numRad = 2u * unchecked((uint)(ulong)System.Math.Ceiling(radial));
             Frame heading = Frame.Identity;
             float angleOffset = (float)(360.0 / numRad);
             for (uint j = 0; j < numRad; j++)

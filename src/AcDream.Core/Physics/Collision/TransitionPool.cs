@@ -1,6 +1,7 @@
 using System;
+using AcDream.Core.Physics.Cells;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 /// <summary>
 /// The ten transitions a world sweeps with, handed out by nesting level: a sweep takes the next free one and gives it

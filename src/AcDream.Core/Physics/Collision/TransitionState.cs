@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision;
 
 /// <summary>
 /// The outcome of one collision test or insertion step of the sweep. Retail: <c>enum TransitionState</c> (acclient.h:6100).

@@ -1,4 +1,7 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.World;
+
+namespace AcDream.Core.Physics.Hooks;
 
 /// <summary>
 /// A hook that interpolates one float linearly from <see cref="StartValue"/> to <see cref="EndValue"/> over

@@ -1,4 +1,6 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Objects;
+
+namespace AcDream.Core.Physics.Hooks;
 
 /// <summary>
 /// A one-shot animation event queued on an object (retail <c>CAnimHook</c> in <c>anim_hooks</c>): executed once in the

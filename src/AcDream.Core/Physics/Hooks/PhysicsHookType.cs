@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Hooks;
 
 /// <summary>
 /// What a <see cref="PhysicsObjHook"/> drives (retail <c>PhysicsObjHook::HookType</c>, the cases of

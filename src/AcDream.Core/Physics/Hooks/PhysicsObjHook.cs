@@ -1,4 +1,7 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.World;
+
+namespace AcDream.Core.Physics.Hooks;
 
 /// <summary>
 /// A persistent per-object callback run once per simulation step until it reports done (retail <c>PhysicsObjHook</c>,

@@ -1,7 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Managers;
 
 /// <summary>
 /// Leashes an object's own motion after a position report (retail <c>ConstraintManager</c>, acclient.h:31529;

@@ -1,6 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Seams;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Managers;
 
 public sealed partial class InterpolationManager
 {

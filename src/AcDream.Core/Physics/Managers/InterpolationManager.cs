@@ -1,7 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Managers;
 
 /// <summary>
 /// Moves a remotely-controlled object smoothly towards the positions the server reports (retail <c>InterpolationManager</c>,

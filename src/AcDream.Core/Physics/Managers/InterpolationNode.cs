@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Managers;
 
 /// <summary>Kind of an <see cref="InterpolationNode"/> (retail <c>InterpolationNode::type</c>, acclient.h:58208).</summary>
 public enum InterpolationNodeType : uint

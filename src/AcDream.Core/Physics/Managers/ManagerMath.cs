@@ -1,4 +1,6 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+
+namespace AcDream.Core.Physics.Managers;
 
 /// <summary>Retail-order helpers shared by the position managers.</summary>
 internal static class ManagerMath

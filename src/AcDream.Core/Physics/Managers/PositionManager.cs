@@ -1,4 +1,7 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+
+namespace AcDream.Core.Physics.Managers;
 
 /// <summary>
 /// Owner of an object's position-correcting sub-managers (retail <c>PositionManager</c>, acclient.h:30952,
@@ -53,7 +56,7 @@ public sealed class PositionManager
         StickyManager?.UseTime();
     }
 
-    /// <summary>Queues an interpolation towards <paramref name="p"/> (see <see cref="Physics.InterpolationManager.InterpolateTo"/>).</summary>
+    /// <summary>Queues an interpolation towards <paramref name="p"/> (see <see cref="InterpolationManager.InterpolateTo"/>).</summary>
     /// <param name="p">The reported position.</param>
     /// <param name="keepHeading">Keep the object's current heading.</param>
     /// <exception cref="System.ArgumentException"><paramref name="p"/> is unusable; nothing changes.</exception>
@@ -73,7 +76,7 @@ public sealed class PositionManager
     // retail: PositionManager::IsInterpolating (acclient.c:388475)
     public bool IsInterpolating() => InterpolationManager is not null && InterpolationManager.IsInterpolating();
 
-    /// <summary>Sticks the object to another object for one second (see <see cref="Physics.StickyManager.StickTo"/>).</summary>
+    /// <summary>Sticks the object to another object for one second (see <see cref="StickyManager.StickTo"/>).</summary>
     /// <param name="objectId">Target id.</param>
     /// <param name="radius">Target radius, metres.</param>
     /// <param name="height">Target height (unused, as in retail).</param>
@@ -98,7 +101,7 @@ public sealed class PositionManager
     // retail: PositionManager::HandleUpdateTarget (acclient.c:388487)
     public void HandleUpdateTarget(in TargetInfo info) => StickyManager?.HandleUpdateTarget(info);
 
-    /// <summary>Constrains the object's own motion relative to <paramref name="p"/> (see <see cref="Physics.ConstraintManager"/>).</summary>
+    /// <summary>Constrains the object's own motion relative to <paramref name="p"/> (see <see cref="ConstraintManager"/>).</summary>
     /// <param name="p">Constraint position.</param>
     /// <param name="startDistance">Counted distance at which scaling starts, metres.</param>
     /// <param name="maxDistance">Counted distance at which offsets are zeroed, metres.</param>

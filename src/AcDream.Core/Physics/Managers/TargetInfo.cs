@@ -1,4 +1,7 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+
+namespace AcDream.Core.Physics.Managers;
 
 /// <summary>Status of a tracked target (retail <c>TargetStatus</c>, acclient.h:7264).</summary>
 public enum TargetStatus : uint

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Math;
 
 /// <summary>
 /// Plain-float32 variants of the Frame operations the tick uses most, for the <see cref="ArithmeticMode.Float32"/> fidelity switch.

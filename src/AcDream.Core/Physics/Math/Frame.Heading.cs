@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Math;
 
 public partial struct Frame
 {

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Math;
 
 /// <summary>
 /// Rotation updates that skip <c>set_rotate</c>'s normalisation, for the <see cref="PhysicsProfile.RenormaliseEvery"/> fidelity

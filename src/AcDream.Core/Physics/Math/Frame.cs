@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Math;
 
 /// <summary>
 /// A rigid transform in retail's layout: an origin, a unit quaternion stored w, x, y, z, and the cached 3x3

@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Math;
 
 /// <summary>
 /// Retail's compass-heading arithmetic: degrees clockwise from north (+Y), in [0, 360).

@@ -1,7 +1,6 @@
-using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Math;
 
 /// <summary>
 /// Retail land geometry: landblocks, outdoor cells and cell ids, ported from <c>LandDefs</c>

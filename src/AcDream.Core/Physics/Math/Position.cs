@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Math;
 
 /// <summary>
 /// A place in the world: the id of the cell that contains it and a <see cref="Frame"/> local to that cell's landblock

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Math;
 
 /// <summary>
 /// Retail's small vector helpers (<c>AC1Legacy::Vector3</c>), written component by component in retail's order with

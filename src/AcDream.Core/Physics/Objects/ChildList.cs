@@ -1,6 +1,7 @@
 using System;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// Objects attached to a parent, each at a frame relative to one of the parent's parts (retail <c>CHILDLIST</c>,

@@ -1,6 +1,8 @@
 using System;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects.Parts;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 public sealed partial class PhysicsObj
 {

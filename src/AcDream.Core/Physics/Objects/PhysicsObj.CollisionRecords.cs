@@ -1,7 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>The object's collision table: the objects it is touching, for once-per-contact reports.</summary>
 public sealed partial class PhysicsObj

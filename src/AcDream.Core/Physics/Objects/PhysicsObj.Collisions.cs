@@ -1,6 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Math;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>The object's side of the collision sweep: its sweep flags and its collision response.</summary>
 public sealed partial class PhysicsObj

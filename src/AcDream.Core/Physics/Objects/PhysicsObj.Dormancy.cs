@@ -1,7 +1,11 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Managers;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Scene;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>How a dormant object's retail bookkeeping evolves while the scene does not visit it.</summary>
 internal enum Dormancy : byte

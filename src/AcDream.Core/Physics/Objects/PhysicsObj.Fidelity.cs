@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// The tick's fidelity switches (<see cref="PhysicsProfile.Arithmetic"/>, <see cref="PhysicsProfile.RenormaliseEvery"/>):

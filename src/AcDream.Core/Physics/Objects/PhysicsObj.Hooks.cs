@@ -1,6 +1,9 @@
 using System;
+using AcDream.Core.Physics.Hooks;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 public sealed partial class PhysicsObj
 {

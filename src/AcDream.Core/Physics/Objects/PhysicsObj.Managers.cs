@@ -1,4 +1,9 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Managers;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects.Seams;
+using AcDream.Core.Physics.World;
+
+namespace AcDream.Core.Physics.Objects;
 
 public sealed partial class PhysicsObj
 {

@@ -1,6 +1,7 @@
 using System;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 public sealed partial class PhysicsObj
 {
@@ -17,7 +18,7 @@ public sealed partial class PhysicsObj
     public bool NewerEvent(PhysicsTimeStamp stamp, ushort newTime)
     {
         ushort old = _updateTimes[(int)stamp];
-        bool newer = Math.Abs(newTime - old) > 0x7FFF ? newTime < old : old < newTime;
+        bool newer = System.Math.Abs(newTime - old) > 0x7FFF ? newTime < old : old < newTime;
         if (newer)
         {
             _updateTimes[(int)stamp] = newTime;
@@ -42,7 +43,7 @@ public sealed partial class PhysicsObj
         }
 
         ushort stored = _updateTimes[(int)PhysicsTimeStamp.Teleport];
-        bool older = Math.Abs(stored - teleportTimestamp) > 0x7FFF ? stored < teleportTimestamp : teleportTimestamp < stored;
+        bool older = System.Math.Abs(stored - teleportTimestamp) > 0x7FFF ? stored < teleportTimestamp : teleportTimestamp < stored;
         if (older)
         {
             return false;

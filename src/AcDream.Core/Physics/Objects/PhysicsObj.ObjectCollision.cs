@@ -1,6 +1,12 @@
 using System;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Objects.Seams;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>The object as an obstacle: how a transition of another object collides with it.</summary>
 public sealed partial class PhysicsObj

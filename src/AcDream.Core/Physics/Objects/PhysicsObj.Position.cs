@@ -1,7 +1,8 @@
 using System;
-using System.Numerics;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 public sealed partial class PhysicsObj
 {

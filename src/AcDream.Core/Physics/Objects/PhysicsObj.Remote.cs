@@ -1,6 +1,8 @@
 using System;
+using AcDream.Core.Physics.Managers;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>The remote-object update path and the sticky/target entry points of the position managers (issue 4).</summary>
 public sealed partial class PhysicsObj
@@ -35,7 +37,7 @@ public sealed partial class PhysicsObj
         }
 
         ushort teleportTime = GetUpdateTime(PhysicsTimeStamp.Teleport);
-        bool staleTeleport = Math.Abs(teleportTime - teleportTimestamp) > 0x7FFF
+        bool staleTeleport = System.Math.Abs(teleportTime - teleportTimestamp) > 0x7FFF
             ? teleportTime < teleportTimestamp
             : teleportTimestamp < teleportTime;
         if (staleTeleport)

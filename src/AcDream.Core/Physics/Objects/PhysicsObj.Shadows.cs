@@ -1,6 +1,8 @@
 using System;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>The object's shadows: its entries in the shadow lists of every cell it overlaps.</summary>
 public sealed partial class PhysicsObj

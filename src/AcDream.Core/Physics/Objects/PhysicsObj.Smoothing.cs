@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// The non-retail remote-smoothing modes of <see cref="PhysicsProfile.RemoteSmoothing"/>: snapping to each report and plain

@@ -1,6 +1,10 @@
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 public sealed partial class PhysicsObj
 {

@@ -1,7 +1,12 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Managers;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Objects.Seams;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// A simulated object (retail <c>CPhysicsObj</c>, acclient.h:30689; PORTAL/cphysobj/CPhysicsObj.c). It belongs to one

@@ -1,6 +1,6 @@
 using System;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// The persistent state bits of a physics object (retail <c>PhysicsState</c>, acclient.h:2815).

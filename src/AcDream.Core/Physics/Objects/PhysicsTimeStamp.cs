@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>Which network event a 16-bit timestamp orders (retail <c>PhysicsTimeStamp</c>, acclient.h:6084).</summary>
 public enum PhysicsTimeStamp

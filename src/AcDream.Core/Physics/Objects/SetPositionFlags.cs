@@ -1,6 +1,6 @@
 using System;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>Flags of a position request (retail <c>SetPositionFlag</c>, acclient.h:6123).</summary>
 [Flags]

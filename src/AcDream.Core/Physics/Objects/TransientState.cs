@@ -1,6 +1,6 @@
 using System;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// The per-frame state bits of a physics object (retail <c>TransientState</c>, acclient.h:3688).

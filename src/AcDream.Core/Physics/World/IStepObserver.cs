@@ -1,4 +1,6 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Objects;
+
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// Test and diagnostics seam: told about every simulation step a world runs. Costs one null test per step when unset.

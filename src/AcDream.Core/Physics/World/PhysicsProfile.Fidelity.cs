@@ -1,6 +1,7 @@
 using System;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// The fidelity switches of a profile. Each default is retail; every other value is a deliberate, documented divergence
@@ -30,7 +31,7 @@ public sealed partial class PhysicsProfile
     public float SweepStepScale { get; private init; } = 1f;
 
     /// <summary>
-    /// How a remote object follows server position reports. Default <see cref="Physics.RemoteSmoothing.Retail"/>
+    /// How a remote object follows server position reports. Default <see cref="RemoteSmoothing.Retail"/>
     /// (<c>InterpolationManager</c>); the others are not retail.
     /// </summary>
     public RemoteSmoothing RemoteSmoothing { get; private init; } = RemoteSmoothing.Retail;

@@ -1,4 +1,6 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// How a world slices time for <c>update_object</c>, and the fidelity switches the accuracy-versus-cost report measures.

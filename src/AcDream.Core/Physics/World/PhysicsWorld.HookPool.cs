@@ -1,4 +1,6 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Hooks;
+
+namespace AcDream.Core.Physics.World;
 
 public sealed partial class PhysicsWorld
 {

@@ -1,8 +1,10 @@
 using System;
-using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Scene;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// The scene side of the world: which objects a tick visits.
@@ -357,12 +359,12 @@ public sealed partial class PhysicsWorld
 
                 queue.Position(h, out double gx, out double gy, out double gz);
                 double dx = gx - sx, dy = gy - sy, dz = gz - sz;
-                double d = Math.Sqrt(dx * dx + dy * dy + dz * dz);
-                if (!(Math.Abs(d - PhysicsGlobals.PlayerActivityDistance) > 2.0 * GateKeySlack(d)))
+                double d = System.Math.Sqrt(dx * dx + dy * dy + dz * dz);
+                if (!(System.Math.Abs(d - PhysicsGlobals.PlayerActivityDistance) > 2.0 * GateKeySlack(d)))
                 {
                     // Near the boundary: decide with retail's own arithmetic (update_object's get_offset and double sqrt).
                     Vector3 pv = seen.GetOffset(queue.Object(h.Slot)._position);
-                    d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+                    d = System.Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
                 }
 
                 bool isFar = d > PhysicsGlobals.PlayerActivityDistance;

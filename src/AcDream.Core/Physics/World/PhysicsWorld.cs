@@ -1,6 +1,10 @@
 using System;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Hooks;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Seams;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// A physics scene: the objects it owns and the state that retail kept in globals — the client clock

@@ -1,4 +1,6 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Math;
+
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// <c>update_object</c>'s time slicing as an allocation-free iterator, shared by the tick (which runs a step for each slice)

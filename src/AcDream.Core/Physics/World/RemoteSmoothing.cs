@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>How a remote object (one the client does not control) follows server position reports: a fidelity switch.</summary>
 public enum RemoteSmoothing

@@ -1,6 +1,6 @@
 using System;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// The effects a scene simulates, declared once per <see cref="PhysicsWorld"/> (<see cref="PhysicsWorld.Effects"/>).

@@ -1,5 +1,7 @@
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 

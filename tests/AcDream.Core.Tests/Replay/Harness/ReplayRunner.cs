@@ -1,7 +1,8 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 

@@ -1,4 +1,5 @@
-using AcDream.Core.Physics;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Seams;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 

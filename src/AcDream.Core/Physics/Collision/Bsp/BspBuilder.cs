@@ -1,8 +1,11 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>
 /// Builds <see cref="BspTree"/>s for synthetic scenes and tests: a physics BSP from polygons or triangles, and a cell BSP
@@ -183,8 +186,8 @@ public static class BspBuilder
                     foreach (Vector3 v in polys[pi].Vertices)
                     {
                         double d = plane.DotProduct(v);
-                        lo = Math.Min(lo, d);
-                        hi = Math.Max(hi, d);
+                        lo = System.Math.Min(lo, d);
+                        hi = System.Math.Max(hi, d);
                     }
 
                     if (lo >= -SideEpsilon && hi > SideEpsilon)
@@ -243,7 +246,7 @@ public static class BspBuilder
                 foreach (Vector3 v in polys[pi].Vertices)
                 {
                     double dx = (double)v.X - c.X, dy = (double)v.Y - c.Y, dz = (double)v.Z - c.Z;
-                    r = Math.Max(r, Math.Sqrt(dx * dx + dy * dy + dz * dz));
+                    r = System.Math.Max(r, System.Math.Sqrt(dx * dx + dy * dy + dz * dz));
                 }
             }
 

@@ -1,4 +1,6 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Collision.Primitives;
+
+namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>
 /// One node of a <see cref="BspTree"/>, in retail's shape (<c>BSPNODE</c> acclient.h:32157 and <c>BSPLEAF</c>

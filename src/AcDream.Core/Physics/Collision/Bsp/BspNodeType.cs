@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>
 /// The kind of a BSP node, as retail stores it: a four-character tag read as a big-endian integer

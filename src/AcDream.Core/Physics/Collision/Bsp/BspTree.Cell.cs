@@ -1,6 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>How a sphere lies against an indoor cell's region (<see cref="BspTree.SphereIntersectsCellBsp(in Sphere)"/>).</summary>
 public enum CellBspSphere

@@ -1,7 +1,10 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>
 /// The BSP as a collision body of the sweep: the entry points a cell or a physics part calls with the transition's

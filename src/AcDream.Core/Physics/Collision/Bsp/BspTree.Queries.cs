@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>The recursive sphere queries of the BSP (retail's virtual <c>BSPNODE</c> / <c>BSPLEAF</c> pairs).</summary>
 /// <remarks>

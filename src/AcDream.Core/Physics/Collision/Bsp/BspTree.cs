@@ -1,6 +1,8 @@
 using System;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>
 /// A BSP tree in retail's shape (<c>BSPTREE</c> acclient.h:31963, PORTAL/cgeometry/CBSPTree.c, CBSPNode.c, CBSPLeaf.c):

@@ -1,6 +1,8 @@
 using System;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>
 /// The physics half of a graphics object (a part's mesh): its physics BSP and the sphere bounding it, in part-local

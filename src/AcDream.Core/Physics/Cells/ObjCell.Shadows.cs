@@ -1,0 +1,118 @@
+using System;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Objects;
+
+namespace AcDream.Core.Physics.Cells;
+
+/// <summary>The cell's list of object shadows: the objects a sweep through the cell must test.</summary>
+public abstract partial class ObjCell
+{
+    // Allocated with the cell (one growth step), so that the first objects to walk in do not allocate inside a tick.
+    private ShadowObj[] _shadowObjects = new ShadowObj[ShadowListGrowth];
+
+    /// <summary>Growth step of the shadow list. Retail grows by 5 (<c>add_shadow_object</c>, acclient.c:346804).</summary>
+    public const int ShadowListGrowth = 5;
+
+    /// <summary>Number of shadows in the cell. Retail: <c>num_shadow_objects</c>.</summary>
+    public int NumShadowObjects { get; private set; }
+
+    /// <summary>The shadows in the cell, <see cref="NumShadowObjects"/> long, in retail's list order.</summary>
+    public ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
+
+    /// <summary>
+    /// Makes room for <paramref name="capacity"/> shadows without growing later (for a client that knows how crowded a cell
+    /// will be, e.g. when its landblock loads). The list otherwise grows by <see cref="ShadowListGrowth"/> only past its
+    /// largest size so far, and never shrinks.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="capacity"/> is negative.</exception>
+    public void ReserveShadowCapacity(int capacity)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(capacity);
+        if (capacity > _shadowObjects.Length)
+        {
+            Array.Resize(ref _shadowObjects, capacity);
+        }
+    }
+
+    /// <summary>Lists <paramref name="shadow"/> in the cell and points it at the cell.</summary>
+    /// <remarks>The list grows by <see cref="ShadowListGrowth"/> when full and never shrinks (retail shrinks a list with
+    /// more than 10 spare slots; keeping the capacity keeps the tick allocation-free).</remarks>
+    // retail: CObjCell::add_shadow_object (acclient.c:346804)
+    public void AddShadowObject(ShadowObj shadow)
+    {
+        ArgumentNullException.ThrowIfNull(shadow);
+        if (NumShadowObjects >= _shadowObjects.Length)
+        {
+            Array.Resize(ref _shadowObjects, _shadowObjects.Length + ShadowListGrowth);
+        }
+
+        _shadowObjects[NumShadowObjects++] = shadow;
+        shadow.Cell = this;
+    }
+
+    /// <summary>Removes <paramref name="shadow"/> (the last shadow takes its slot) and clears its cell.</summary>
+    // retail: CObjCell::remove_shadow_object (acclient.c:346823)
+    public void RemoveShadowObject(ShadowObj shadow)
+    {
+        ArgumentNullException.ThrowIfNull(shadow);
+        for (int i = 0; i < NumShadowObjects; i++)
+        {
+            if (ReferenceEquals(_shadowObjects[i], shadow))
+            {
+                shadow.Cell = null;
+                NumShadowObjects--;
+                _shadowObjects[i] = _shadowObjects[NumShadowObjects];
+                _shadowObjects[NumShadowObjects] = null!;
+                return;
+            }
+        }
+    }
+
+    /// <summary>
+    /// Every object shadowed in the cell (except the mover itself and attached objects) against the transition, until
+    /// one answers other than OK. An initial placement tests no objects.
+    /// </summary>
+    // retail: CObjCell::find_obj_collisions (acclient.c:347141)
+    protected TransitionState FindShadowObjCollisions(Transition transition)
+    {
+        ArgumentNullException.ThrowIfNull(transition);
+        TransitionState result = TransitionState.Ok;
+        if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
+        {
+            return result;
+        }
+
+        PhysicsObj? mover = transition.ObjectInfo.Object;
+        for (int i = 0; i < NumShadowObjects; i++)
+        {
+            PhysicsObj obj = _shadowObjects[i].PhysObj;
+            if (obj.Parent is null && !ReferenceEquals(obj, mover))
+            {
+                result = obj.FindObjCollisions(transition);
+                if (result != TransitionState.Ok)
+                {
+                    break;
+                }
+            }
+        }
+
+        return result;
+    }
+
+    /// <summary>True when <paramref name="obj"/>, where it stands, overlaps an object shadowed in this cell.</summary>
+    // retail: CObjCell::check_collisions (acclient.c:347173)
+    public bool CheckCollisions(PhysicsObj obj)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        for (int i = 0; i < NumShadowObjects; i++)
+        {
+            PhysicsObj other = _shadowObjects[i].PhysObj;
+            if (other.Parent is null && !ReferenceEquals(other, obj) && other.CheckCollision(obj))
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+}

@@ -1,0 +1,50 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.Math;
+
+namespace AcDream.Core.Physics.Collision.Primitives;
+
+/// <summary>
+/// A collision sphere: a centre and a radius, in metres. Retail: <c>CSphere</c> (acclient.h:31107,
+/// PORTAL/cgeometry/CSphere.c). Objects sweep up to two of them (<see cref="SpherePath"/>).
+/// </summary>
+public partial struct Sphere : IEquatable<Sphere>
+{
+    /// <summary>The centre, in the coordinates of whatever owns the sphere (object-local, or landblock-local once cached).</summary>
+    public Vector3 Center;
+
+    /// <summary>The radius, in metres.</summary>
+    public float Radius;
+
+    /// <summary>Creates a sphere.</summary>
+    public Sphere(Vector3 center, float radius)
+    {
+        Center = center;
+        Radius = radius;
+    }
+
+    /// <summary>
+    /// The sphere retail sweeps for an object without collision spheres: radius <see cref="PhysicsGlobals.DummySphereRadius"/>
+    /// (0.1 m), resting on the origin (centre (0, 0, 0.1)). Retail: <c>dummy_sphere</c> (static initialiser acclient.c:784575).
+    /// </summary>
+    public static Sphere Dummy => new(new Vector3(0f, 0f, PhysicsGlobals.DummySphereRadius), PhysicsGlobals.DummySphereRadius);
+
+    /// <inheritdoc />
+    public readonly bool Equals(Sphere other) => Center.Equals(other.Center) && Radius.Equals(other.Radius);
+
+    /// <inheritdoc />
+    public override readonly bool Equals(object? obj) => obj is Sphere s && Equals(s);
+
+    /// <inheritdoc />
+    public override readonly int GetHashCode() => HashCode.Combine(Center, Radius);
+
+    /// <summary>Bitwise equality of centre and radius.</summary>
+    public static bool operator ==(Sphere left, Sphere right) => left.Equals(right);
+
+    /// <summary>Bitwise inequality of centre and radius.</summary>
+    public static bool operator !=(Sphere left, Sphere right) => !left.Equals(right);
+
+    /// <inheritdoc />
+    public override readonly string ToString() =>
+        string.Create(System.Globalization.CultureInfo.InvariantCulture, $"({Center.X}, {Center.Y}, {Center.Z}) r={Radius}");
+}

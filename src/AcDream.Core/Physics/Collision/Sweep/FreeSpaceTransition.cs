@@ -1,0 +1,44 @@
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+
+namespace AcDream.Core.Physics.Collision.Sweep;
+
+/// <summary>
+/// The default <see cref="TransitionSeam"/>: a world with no collision geometry. A sweep always succeeds and ends where it
+/// was asked to, in the same cell, with no contact plane and no sliding normal; a placement succeeds in the requested cell
+/// (adjusted to the outdoor cell under the origin, as <c>store_position</c> does), or sends the object to the lost cell when
+/// the cell id is not a valid world cell.
+/// </summary>
+/// <remarks>Not retail: retail always sweeps against cells. This stands in until the collision module provides the sweep.</remarks>
+public sealed class FreeSpaceTransition : TransitionSeam
+{
+    /// <summary>The shared stateless instance.</summary>
+    public static readonly FreeSpaceTransition Instance = new();
+
+    private FreeSpaceTransition()
+    {
+    }
+
+    /// <inheritdoc />
+    public override bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
+    {
+        result = TransitionResult.FreeSpace(newPos);
+        result.CurrentCellId = obj.CellId;
+        return true;
+    }
+
+    /// <inheritdoc />
+    public override SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags)
+    {
+        Position p = pos;
+        if (!LandDefs.InboundValidCellId(p.ObjCellId) || ((p.ObjCellId & 0xFFFFu) < 0x100u && !p.TryAdjustToOutside()))
+        {
+            obj.GoToLostCell(pos);
+            return SetPositionError.Ok;
+        }
+
+        TransitionResult t = TransitionResult.FreeSpace(p);
+        obj.CommitTransition(t);
+        return SetPositionError.Ok;
+    }
+}

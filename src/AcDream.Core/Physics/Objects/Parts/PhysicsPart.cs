@@ -1,0 +1,68 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Collision.Bsp;
+using AcDream.Core.Physics.Math;
+
+namespace AcDream.Core.Physics.Objects.Parts;
+
+/// <summary>
+/// One placed part of an object (or a building) as a collision body: its graphics object's physics, where the part is
+/// (a position in a landblock) and its scale. Retail: <c>CPhysicsPart</c> (PORTAL/cphysobj/CPhysicsPart.c), the fields
+/// the collision query reads (<c>gfxobj</c>, <c>pos</c>, <c>gfxobj_scale</c>).
+/// </summary>
+/// <remarks>This is the BSP entry point for object-to-object collision: call <see cref="FindObjCollisions"/> for each
+/// part of a shadow object with the part's current position.</remarks>
+public sealed class PhysicsPart
+{
+    private Position _pos;
+
+    /// <summary>Creates a part.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="gfxObj"/> is null.</exception>
+    /// <exception cref="ArgumentException">The position or scale is not valid (non-finite, or a scale component ≤ 0).</exception>
+    public PhysicsPart(GfxObjPhysics gfxObj, in Position pos, Vector3 scale)
+    {
+        ArgumentNullException.ThrowIfNull(gfxObj);
+        GfxObj = gfxObj;
+        SetPosition(pos);
+        if (!VectorMath.IsFinite(scale) || scale.X <= 0f || scale.Y <= 0f || scale.Z <= 0f)
+        {
+            throw new ArgumentException("The scale must be finite and positive.", nameof(scale));
+        }
+
+        GfxObjScale = scale;
+    }
+
+    /// <summary>The part's graphics object physics. Retail: <c>gfxobj</c>.</summary>
+    public GfxObjPhysics GfxObj { get; }
+
+    /// <summary>Where the part is (cell id and frame in its landblock). Retail: <c>pos</c>.</summary>
+    public ref readonly Position Pos => ref _pos;
+
+    /// <summary>The part's scale; the collision uses its z. Retail: <c>gfxobj_scale</c>.</summary>
+    public Vector3 GfxObjScale { get; }
+
+    /// <summary>Moves the part.</summary>
+    /// <exception cref="ArgumentException">The frame is not finite.</exception>
+    public void SetPosition(in Position pos)
+    {
+        if (!VectorMath.IsFinite(pos.Frame.Origin) || !pos.Frame.IsValid())
+        {
+            throw new ArgumentException("The part position must be finite with a valid rotation.", nameof(pos));
+        }
+
+        _pos = pos;
+    }
+
+    /// <summary>
+    /// The transition's spheres against this part: they are cached in the part's space (divided by the scale's z) and
+    /// tested against the graphics object's physics BSP.
+    /// </summary>
+    // retail: CPhysicsPart::find_obj_collisions (acclient.c:314655)
+    public TransitionState FindObjCollisions(Transition transition)
+    {
+        ArgumentNullException.ThrowIfNull(transition);
+        transition.SpherePath.CacheLocalSpaceSphere(_pos, GfxObjScale.Z);
+        return GfxObj.FindObjCollisions(transition, GfxObjScale.Z);
+    }
+}

@@ -1,0 +1,46 @@
+namespace AcDream.Core.Physics.Objects.Seams;
+
+/// <summary>
+/// The movement manager a world creates on demand when no <see cref="IMovementManagerFactory"/> is set: a movement
+/// manager with no weenie object and no motion table. Its interpreter answers retail's no-weenie speeds.
+/// </summary>
+public sealed class BasicMovementManager : IMovementManager, IMotionInterpreter
+{
+    /// <summary>Retail's speed with no weenie: <c>1.0 * 4.0</c> (CMotionInterp::get_max_speed, acclient.c:343485).</summary>
+    public const double NoWeenieMaxSpeed = 1.0 * 4.0;
+
+    /// <inheritdoc />
+    public IMotionInterpreter? MotionInterpreter => this;
+
+    /// <summary>Number of <see cref="UseTime"/> calls.</summary>
+    public int UseTimeCount { get; private set; }
+
+    /// <inheritdoc />
+    public void UseTime() => UseTimeCount++;
+
+    /// <inheritdoc />
+    public void LeaveGround()
+    {
+    }
+
+    /// <inheritdoc />
+    public void HitGround()
+    {
+    }
+
+    /// <inheritdoc />
+    public bool IsMovingTo() => false;
+
+    /// <inheritdoc />
+    public void HandleEnterWorld()
+    {
+    }
+
+    /// <inheritdoc />
+    // retail: CMotionInterp::get_max_speed (acclient.c:343485), weenie_obj == null branch
+    public double GetMaxSpeed() => NoWeenieMaxSpeed;
+
+    /// <inheritdoc />
+    // retail: CMotionInterp::get_adjusted_max_speed (acclient.c:343511), weenie_obj == null, not running
+    public double GetAdjustedMaxSpeed() => NoWeenieMaxSpeed;
+}

@@ -1,0 +1,116 @@
+using System;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Math;
+
+namespace AcDream.Core.Physics.Terrain;
+
+/// <summary>
+/// The outdoor world: every loaded landblock's terrain, addressed by landblock column and row (a flat 255 × 255 array,
+/// no hashing on the query path). Retail keeps the loaded blocks in <c>LScape</c> around the viewer; this class is that
+/// state made explicit, so several worlds can coexist (no global state).
+/// </summary>
+/// <remarks>
+/// Queries allocate nothing. Landblocks are added and removed between ticks; the class is not thread-safe for writes.
+/// </remarks>
+public sealed partial class TerrainWorld
+{
+    private readonly LandBlock?[] _blocks = new LandBlock?[LandDefs.LandblocksPerSide * LandDefs.LandblocksPerSide];
+
+    /// <summary>Creates an empty world whose landblocks are built with <paramref name="heightTable"/>.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="heightTable"/> is null.</exception>
+    public TerrainWorld(LandHeightTable heightTable)
+    {
+        ArgumentNullException.ThrowIfNull(heightTable);
+        HeightTable = heightTable;
+    }
+
+    /// <summary>The land height table used by <see cref="AddLandBlock(uint, ReadOnlySpan{byte}, ReadOnlySpan{ushort})"/>.</summary>
+    public LandHeightTable HeightTable { get; }
+
+    /// <summary>The number of loaded landblocks.</summary>
+    public int LandBlockCount { get; private set; }
+
+    /// <summary>Builds a landblock from its retail data with this world's height table and adds it (replacing any
+    /// landblock already at its place).</summary>
+    /// <exception cref="ArgumentException">See <see cref="LandBlock(uint, ReadOnlySpan{byte}, ReadOnlySpan{ushort}, LandHeightTable)"/>.</exception>
+    public LandBlock AddLandBlock(uint blockId, ReadOnlySpan<byte> height, ReadOnlySpan<ushort> terrain)
+    {
+        var block = new LandBlock(blockId, height, terrain, HeightTable);
+        AddLandBlock(block);
+        return block;
+    }
+
+    /// <summary>Adds a built landblock, replacing any landblock already at its place.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="block"/> is null.</exception>
+    public void AddLandBlock(LandBlock block)
+    {
+        ArgumentNullException.ThrowIfNull(block);
+        int i = Index(block.BlockX, block.BlockY);
+        if (_blocks[i] is null)
+        {
+            LandBlockCount++;
+        }
+
+        _blocks[i] = block;
+    }
+
+    /// <summary>Removes the landblock that contains <paramref name="cellOrBlockId"/>; false when none was loaded.</summary>
+    public bool RemoveLandBlock(uint cellOrBlockId)
+    {
+        if (!TryBlockIndex(cellOrBlockId, out int i) || _blocks[i] is null)
+        {
+            return false;
+        }
+
+        _blocks[i] = null;
+        LandBlockCount--;
+        return true;
+    }
+
+    /// <summary>The loaded landblock at column <paramref name="blockX"/>, row <paramref name="blockY"/>, or null (also
+    /// for coordinates outside 0..254).</summary>
+    public LandBlock? GetLandBlock(int blockX, int blockY)
+    {
+        if ((uint)blockX >= LandDefs.LandblocksPerSide || (uint)blockY >= LandDefs.LandblocksPerSide)
+        {
+            return null;
+        }
+
+        return _blocks[Index(blockX, blockY)];
+    }
+
+    /// <summary>The loaded landblock that contains <paramref name="cellOrBlockId"/> (any id <c>0xXXYY....</c>), or null.</summary>
+    public LandBlock? GetLandBlock(uint cellOrBlockId) =>
+        TryBlockIndex(cellOrBlockId, out int i) ? _blocks[i] : null;
+
+    /// <summary>
+    /// The land cell with id <paramref name="cellId"/>, or null when the id is not an outdoor cell id or its landblock
+    /// is not loaded.
+    /// </summary>
+    // retail: LScape::get_landcell (acclient.c:307511) / CLandCell::Get (acclient.c:354915)
+    public LandCell? GetLandCell(uint cellId)
+    {
+        if (!LandDefs.IsOutdoorCell(cellId) || !TryBlockIndex(cellId, out int i))
+        {
+            return null;
+        }
+
+        return _blocks[i]?.GetLandCell(cellId);
+    }
+
+    private static int Index(int blockX, int blockY) => blockX * LandDefs.LandblocksPerSide + blockY;
+
+    private static bool TryBlockIndex(uint id, out int index)
+    {
+        int bx = (int)(id >> 24);
+        int by = (int)((id >> 16) & 0xFF);
+        if (bx >= LandDefs.LandblocksPerSide || by >= LandDefs.LandblocksPerSide)
+        {
+            index = 0;
+            return false;
+        }
+
+        index = Index(bx, by);
+        return true;
+    }
+}
