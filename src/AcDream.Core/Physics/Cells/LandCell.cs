@@ -3,6 +3,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.Collision;
 
 namespace AcDream.Core.Physics.Cells;
 
@@ -146,4 +147,12 @@ public sealed partial class LandCell
     /// <inheritdoc />
     public override string ToString() =>
         string.Create(System.Globalization.CultureInfo.InvariantCulture, $"LandCell 0x{Id:X8} ({WaterType})");
+
+    /// <summary>The building on this cell, or null. Retail: <c>CSortCell::building</c>.</summary>
+    public BuildingObj? Building { get; set; }
+
+    /// <summary>The building's shell against the check spheres; OK without a building.</summary>
+    // retail: CSortCell::find_collisions (acclient.c:356106)
+    public TransitionState FindBuildingCollisions(Transition transition) =>
+        Building is null ? TransitionState.Ok : Building.FindBuildingCollisions(transition);
 }

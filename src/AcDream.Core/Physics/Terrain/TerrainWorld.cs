@@ -1,6 +1,7 @@
 using System;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Terrain;
 
@@ -12,7 +13,7 @@ namespace AcDream.Core.Physics.Terrain;
 /// <remarks>
 /// Queries allocate nothing. Landblocks are added and removed between ticks; the class is not thread-safe for writes.
 /// </remarks>
-public sealed partial class TerrainWorld
+public sealed partial class TerrainWorld : ICellSource
 {
     private readonly LandBlock?[] _blocks = new LandBlock?[LandDefs.LandblocksPerSide * LandDefs.LandblocksPerSide];
 
@@ -113,4 +114,11 @@ public sealed partial class TerrainWorld
         index = Index(bx, by);
         return true;
     }
+
+    /// <summary>The world whose objects' shadows these cells hold (set when a world takes a sweep over them).</summary>
+    internal PhysicsWorld? OwnerWorld { get; set; }
+
+    /// <summary>The loaded outdoor cell <paramref name="cellId"/>, or null (interior cells arrive with issue 6).</summary>
+    // retail: CObjCell::GetVisible (acclient.c:346416) -> CLandCell::Get (acclient.c:354915) -> LScape::get_landcell
+    public ObjCell? GetVisible(uint cellId) => GetLandCell(cellId);
 }
