@@ -12,7 +12,7 @@ using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>Builders for object-collision scenes: flat ground at z = 20 in landblock 0x8080 (and optionally 0x8180), walkers,
 /// obstacles with spheres or cylinder spheres.</summary>

@@ -4,7 +4,7 @@ using System.IO;
 using AcDream.Core.Physics.Terrain;
 using Xunit;
 
-namespace AcDream.Core.Tests;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>
 /// A fact that needs the real Dereth terrain fixtures (heightfield and land height table). They are not in the repository:

@@ -9,7 +9,7 @@ using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>Shared builders for sweep scenes: hand-made terrain, a world with the retail sweep, and walkers.</summary>
 internal static class SweepScene

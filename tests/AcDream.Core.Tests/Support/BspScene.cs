@@ -12,7 +12,7 @@ using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>
 /// Shared builders for static-geometry scenes: boxes as one-sided quads with outward normals, buildings (a BSP shell on
