@@ -9,9 +9,9 @@ using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
-using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support.Shared;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;
@@ -37,22 +37,8 @@ public class BspSweepBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        var table = new float[256];
-        for (int i = 0; i < table.Length; i++)
-        {
-            table[i] = i;
-        }
-
-        var terrain = new TerrainWorld(new LandHeightTable(table));
-        var h = new byte[81];
-        var t = new ushort[81];
-        for (int i = 0; i < 81; i++)
-        {
-            h[i] = 20;
-            t[i] = TerrainTypes.MakeWord(0, 1);
-        }
-
-        terrain.AddLandBlock(LandBlock.MakeId(0x40, 0x40), h, t);
+        TerrainWorld terrain = SyntheticTerrain.Metres();
+        SyntheticTerrain.AddBlock(terrain, 0x40, 0x40, (_, _) => 20);
         var cells = new WorldCells(terrain);
 
         // Building at (100, 100, 20): pillars 0.5 x 0.5 x 3 every 2 m over x, y 10..38; a wall x 0..40, y 0..0.5; stairs
@@ -62,14 +48,14 @@ public class BspSweepBenchmarks
         {
             for (int j = 0; j < 15; j++)
             {
-                AddBox(polys, new Vector3(10f + 2f * i, 10f + 2f * j, 0f), new Vector3(10.5f + 2f * i, 10.5f + 2f * j, 3f));
+                BoxShapes.AddBox(polys, new Vector3(10f + 2f * i, 10f + 2f * j, 0f), new Vector3(10.5f + 2f * i, 10.5f + 2f * j, 3f));
             }
         }
 
-        AddBox(polys, new Vector3(0f, 0f, 0f), new Vector3(40f, 0.5f, 3f));
+        BoxShapes.AddBox(polys, new Vector3(0f, 0f, 0f), new Vector3(40f, 0.5f, 3f));
         for (int i = 0; i < 5; i++)
         {
-            AddBox(polys, new Vector3(45f + i, 10f, 0f), new Vector3(46f + i, 13f, 0.55f * (i + 1)));
+            BoxShapes.AddBox(polys, new Vector3(45f + i, 10f, 0f), new Vector3(46f + i, 13f, 0.55f * (i + 1)));
         }
 
         PolygonCount = polys.Count;
@@ -123,37 +109,6 @@ public class BspSweepBenchmarks
         return q;
     }
 
-    private static void AddBox(List<Polygon> polys, Vector3 min, Vector3 max)
-    {
-        float x0 = min.X, y0 = min.Y, z0 = min.Z, x1 = max.X, y1 = max.Y, z1 = max.Z;
-        polys.Add(Quad(polys.Count, new(x1, y0, z0), new(x1, y1, z0), new(x1, y1, z1), new(x1, y0, z1)));
-        polys.Add(Quad(polys.Count, new(x0, y0, z0), new(x0, y0, z1), new(x0, y1, z1), new(x0, y1, z0)));
-        polys.Add(Quad(polys.Count, new(x0, y1, z0), new(x0, y1, z1), new(x1, y1, z1), new(x1, y1, z0)));
-        polys.Add(Quad(polys.Count, new(x0, y0, z0), new(x1, y0, z0), new(x1, y0, z1), new(x0, y0, z1)));
-        polys.Add(Quad(polys.Count, new(x0, y0, z1), new(x1, y0, z1), new(x1, y1, z1), new(x0, y1, z1)));
-        polys.Add(Quad(polys.Count, new(x0, y0, z0), new(x0, y1, z0), new(x1, y1, z0), new(x1, y0, z0)));
-    }
-
-    private static Polygon Quad(int id, Vector3 a, Vector3 b, Vector3 c, Vector3 d) =>
-        new((short)id, new[] { a, b, c, d }, new ushort[] { 0, 1, 2, 3 });
-
-    private static PhysicsObj Walker(PhysicsWorld world, uint id, in Position p, float stepUp, PhysicsState? state)
-    {
-        PhysicsObj obj = world.CreateObject(id);
-        var parts = new SimplePartArray(1, 0) { StepUpHeight = stepUp, StepDownHeight = stepUp };
-        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
-        obj.PartArray = parts;
-        obj.MovementManager = new BasicMovementManager();
-        if (state is not null)
-        {
-            obj.SetState(state.Value);
-        }
-
-        if (!obj.EnterWorld(p))
-        {
-            throw new InvalidOperationException("Walker could not be placed.");
-        }
-
-        return obj;
-    }
+    private static PhysicsObj Walker(PhysicsWorld world, uint id, in Position p, float stepUp, PhysicsState? state) =>
+        Walkers.Create(world, id, p, Walkers.OneSphere(0.5f, stepUp, stepUp), state);
 }

@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support.Shared;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;
@@ -49,8 +50,7 @@ public class FidelitySceneBenchmarks
         for (int i = 0; i < N; i++)
         {
             float x = 20f + (i % 10) * 15f, y = 20f + (i / 10) * 15f % 150f;
-            var p = new Position(TerrainKit.CellId((int)(x / 24f), (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, 0f), 36f * i));
-            p.Frame.Origin = new Vector3(x, y, TerrainKit.Ground(terrain, p));
+            Position p = SyntheticTerrain.OnGround(terrain, TerrainKit.CellId((int)(x / 24f), (int)(y / 24f)), x, y, 36f * i);
             PhysicsObj w = TerrainKit.Walker(_world, p, (uint)(i + 1));
             TerrainKit.Walk(w, new Vector3(0f, 3f, 0f), 0.5f);
         }

@@ -1,7 +1,6 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision;
-using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
@@ -9,6 +8,7 @@ using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support.Shared;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;
@@ -36,18 +36,8 @@ public class ObjectCollisionBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        var table = new float[256];
-        for (int i = 0; i < table.Length; i++)
-        {
-            table[i] = i;
-        }
-
-        var terrain = new TerrainWorld(new LandHeightTable(table));
-        var h = new byte[81];
-        var t = new ushort[81];
-        Array.Fill(h, (byte)20);
-        Array.Fill(t, TerrainTypes.MakeWord(0, 1));
-        terrain.AddLandBlock(LandBlock.MakeId(0x40, 0x40), h, t);
+        TerrainWorld terrain = SyntheticTerrain.Metres();
+        SyntheticTerrain.AddBlock(terrain, 0x40, 0x40, (_, _) => 20);
         _world = new PhysicsWorld(0.0);
         _sweep = new RetailTransition(terrain);
         _world.Transition = _sweep;
@@ -112,17 +102,8 @@ public class ObjectCollisionBenchmarks
 
     private static PhysicsObj Creature(PhysicsWorld world, uint id, in Position p)
     {
-        PhysicsObj obj = world.CreateObject(id);
-        obj.Weenie = WeenieTraits.Creature;
-        var parts = new SimplePartArray(1, 0) { StepUpHeight = 0.6f, StepDownHeight = 0.6f, Height = 1f };
-        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
-        obj.PartArray = parts;
-        obj.MovementManager = new BasicMovementManager();
-        if (!obj.EnterWorld(p))
-        {
-            throw new InvalidOperationException("Creature could not be placed.");
-        }
-
-        return obj;
+        SimplePartArray parts = Walkers.OneSphere();
+        parts.Height = 1f;
+        return Walkers.Create(world, id, p, parts, weenie: WeenieTraits.Creature);
     }
 }

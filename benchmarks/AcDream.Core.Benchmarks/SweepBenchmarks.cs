@@ -1,8 +1,6 @@
 using System;
-using System.IO;
 using System.Numerics;
 using AcDream.Core.Physics.Collision;
-using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
@@ -10,6 +8,7 @@ using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support.Shared;
 using BenchmarkDotNet.Attributes;
 
 namespace AcDream.Core.Benchmarks;
@@ -33,17 +32,11 @@ public class SweepBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        var table = new float[256];
-        for (int i = 0; i < table.Length; i++)
-        {
-            table[i] = i;
-        }
-
-        var terrain = new TerrainWorld(new LandHeightTable(table));
-        AddBlock(terrain, 0x40, 0x40, (_, _) => 20);
-        AddBlock(terrain, 0x41, 0x40, (_, _) => 20);
-        AddBlock(terrain, 0x50, 0x50, (vx, _) => 10 + 27 * vx);
-        AddBlock(terrain, 0x60, 0x60, (vx, _) => vx <= 4 ? 10 : 10 + 40 * (vx - 4));
+        TerrainWorld terrain = SyntheticTerrain.Metres();
+        SyntheticTerrain.AddBlock(terrain, 0x40, 0x40, (_, _) => 20);
+        SyntheticTerrain.AddBlock(terrain, 0x41, 0x40, (_, _) => 20);
+        SyntheticTerrain.AddBlock(terrain, 0x50, 0x50, (vx, _) => 10 + 27 * vx);
+        SyntheticTerrain.AddBlock(terrain, 0x60, 0x60, (vx, _) => vx <= 4 ? 10 : 10 + 40 * (vx - 4));
         var world = new PhysicsWorld(0.0);
         _sweep = new RetailTransition(terrain);
         world.Transition = _sweep;
@@ -104,36 +97,7 @@ public class SweepBenchmarks
         return q;
     }
 
-    private static void AddBlock(TerrainWorld world, int bx, int by, Func<int, int, int> height)
-    {
-        var h = new byte[81];
-        var t = new ushort[81];
-        for (int vx = 0; vx < 9; vx++)
-        {
-            for (int vy = 0; vy < 9; vy++)
-            {
-                h[vx * 9 + vy] = (byte)height(vx, vy);
-                t[vx * 9 + vy] = TerrainTypes.MakeWord(0, 1);
-            }
-        }
-
-        world.AddLandBlock(LandBlock.MakeId(bx, by), h, t);
-    }
-
-    private static PhysicsObj Walker(PhysicsWorld world, uint id, in Position p)
-    {
-        PhysicsObj obj = world.CreateObject(id);
-        var parts = new SimplePartArray(1, 0) { StepUpHeight = 0.6f, StepDownHeight = 0.6f };
-        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
-        obj.PartArray = parts;
-        obj.MovementManager = new BasicMovementManager();
-        if (!obj.EnterWorld(p))
-        {
-            throw new InvalidOperationException("Walker could not be placed.");
-        }
-
-        return obj;
-    }
+    private static PhysicsObj Walker(PhysicsWorld world, uint id, in Position p) => Walkers.Create(world, id, p, Walkers.OneSphere());
 }
 
 /// <summary>
@@ -166,7 +130,7 @@ public class WorldSweepBenchmarks
         for (int i = 0; placed < N && i < N * 4; i++)
         {
             float x = 20f + (float)rnd.NextDouble() * 152f, y = 20f + (float)rnd.NextDouble() * 152f;
-            var p = new Position(LandDefs.LCoordToGid(0xA9 * 8 + (int)(x / 24f), 0xB4 * 8 + (int)(y / 24f)), new Vector3(x, y, 0f));
+            var p = new Position(Holtburg.CentreCell(x, y), new Vector3(x, y, 0f));
             if (!terrain.TryGetTerrainHeight(p, out float z))
             {
                 continue;
@@ -175,14 +139,9 @@ public class WorldSweepBenchmarks
             p.Frame.Origin = new Vector3(x, y, z);
             p.Frame.SetHeading((float)(rnd.NextDouble() * 360.0));
             PhysicsObj obj = _world.CreateObject((uint)(placed + 1));
-            var parts = new SimplePartArray(1, 0)
-            {
-                StepUpHeight = 0.6f,
-                StepDownHeight = 0.6f,
-                SequenceVelocity = new Vector3(0f, 3.12f, 0f),
-                SequenceOmega = new Vector3(0f, 0f, 0.5f),
-            };
-            parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
+            SimplePartArray parts = Walkers.OneSphere();
+            parts.SequenceVelocity = new Vector3(0f, 3.12f, 0f);
+            parts.SequenceOmega = new Vector3(0f, 0f, 0.5f);
             obj.PartArray = parts;
             obj.MovementManager = new BasicMovementManager();
             if (obj.EnterWorld(p))
@@ -220,15 +179,7 @@ public class WorldSweepBenchmarks
         TerrainWorld world;
         if (!string.IsNullOrEmpty(dir))
         {
-            world = new TerrainWorld(TerrainDataFiles.ReadHeightTableCsv(Path.Combine(dir, "land_height_table.csv")));
-            foreach (LandBlockData d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
-            {
-                if (d.BlockId >> 24 is >= 0xA8 and <= 0xAA && ((d.BlockId >> 16) & 0xFF) is >= 0xB3 and <= 0xB5)
-                {
-                    world.AddLandBlock(d.BlockId, d.Height, d.Terrain);
-                }
-            }
-
+            world = Holtburg.World(Holtburg.Read(dir));
             Console.WriteLine("// WorldSweepBenchmarks: real Holtburg terrain from " + dir);
             return world;
         }

@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Behavior;

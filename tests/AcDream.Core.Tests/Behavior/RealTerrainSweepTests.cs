@@ -4,6 +4,8 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
+using AcDream.Core.Tests.Support.Shared;
 using Xunit;
 
 namespace AcDream.Core.Tests.Behavior;
@@ -22,8 +24,7 @@ public class RealTerrainSweepTests
         for (int i = 0; i < walkers.Length; i++)
         {
             float x = 24f + 16f * (i % 8), y = 30f + 30f * (i / 8);
-            var p = new Position(LandDefs.LCoordToGid(0xA9 * 8 + (int)(x / 24f), 0xB4 * 8 + (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, 0f), 45f * i));
-            p.Frame.Origin = new Vector3(x, y, SweepScene.Ground(terrain, p));
+            Position p = SyntheticTerrain.OnGround(terrain, Holtburg.CentreCell(x, y), x, y, 45f * i);
             walkers[i] = SweepScene.Walker(world, p, id: (uint)(i + 1));
             SweepScene.SetWalk(walkers[i], new Vector3(0f, 3.12f, 0f));
             ((SimplePartArray)walkers[i].PartArray!).SequenceOmega = new Vector3(0f, 0f, 0.5f);

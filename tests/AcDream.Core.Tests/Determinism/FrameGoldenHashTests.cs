@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Math;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Determinism;

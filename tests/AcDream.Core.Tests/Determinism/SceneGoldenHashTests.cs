@@ -9,7 +9,8 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Behavior;
+using AcDream.Core.Tests.Support;
+using AcDream.Core.Tests.Support.Shared;
 using Xunit;
 
 namespace AcDream.Core.Tests.Determinism;
@@ -55,12 +56,8 @@ public class SceneGoldenHashTests
     private static PhysicsWorld World(WorldCells cells, double start, bool visitEveryObject = false) =>
         new(start) { VisitEveryObject = visitEveryObject, Transition = new RetailTransition(cells) };
 
-    private static Position At(TerrainWorld terrain, float x, float y, float lift = 0f, float heading = 0f)
-    {
-        var p = new Position(SweepScene.CellId(Bx, By, (int)(x / 24f), (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, 0f), heading));
-        p.Frame.Origin = new Vector3(x, y, SweepScene.Ground(terrain, p) + lift);
-        return p;
-    }
+    private static Position At(TerrainWorld terrain, float x, float y, float lift = 0f, float heading = 0f) =>
+        SyntheticTerrain.OnGround(terrain, SweepScene.CellId(Bx, By, (int)(x / 24f), (int)(y / 24f)), x, y, heading, lift);
 
     /// <summary>
     /// Creates the scene's objects (in ascending id order, or descending when <paramref name="descending"/>): six walkers

@@ -5,7 +5,8 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Behavior;
+using AcDream.Core.Tests.Support;
+using AcDream.Core.Tests.Support.Shared;
 using Xunit;
 
 namespace AcDream.Core.Tests.Determinism;
@@ -36,9 +37,8 @@ public class SweepGoldenHashTests
             // Walkers are created in index order or in reverse; the script below addresses them by index (= id - 1).
             int i = descendingCreation ? walkers.Length - 1 - k : k;
             float x = 30f + 18f * i, y = 40f + 10f * i;
-            var p = new Position(LandDefs.LCoordToGid(SweepScene.BlockX * 8 + (int)(x / 24f), SweepScene.BlockY * 8 + (int)(y / 24f)),
-                Frame.FromHeading(new Vector3(x, y, 0f), 40f * i));
-            p.Frame.Origin = new Vector3(x, y, SweepScene.Ground(terrain, p));
+            uint cell = LandDefs.LCoordToGid(SweepScene.BlockX * 8 + (int)(x / 24f), SweepScene.BlockY * 8 + (int)(y / 24f));
+            Position p = SyntheticTerrain.OnGround(terrain, cell, x, y, 40f * i);
             walkers[i] = SweepScene.Walker(world, p, id: (uint)(i + 1));
             SweepScene.SetWalk(walkers[i], new Vector3(0f, 2f + 0.3f * i, 0f));
         }

@@ -3,6 +3,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

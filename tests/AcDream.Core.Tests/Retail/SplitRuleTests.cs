@@ -1,6 +1,7 @@
 using System;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

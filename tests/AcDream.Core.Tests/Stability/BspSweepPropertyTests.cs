@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Behavior;
+using AcDream.Core.Tests.Support;
 using FsCheck;
 using FsCheck.Fluent;
 using Xunit;

@@ -6,6 +6,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
 using FsCheck;
 using FsCheck.Fluent;
 using Xunit;
@@ -132,12 +133,12 @@ public class DtSequencePropertyTests
         // no step of any length moves it.
         PropertyAssert.Holds(Cfg, Prop.ForAll(Sequences.ToArbitrary(), seq =>
         {
-            TerrainWorld terrain = Behavior.SweepScene.Terrain();
-            Behavior.SweepScene.AddBlock(terrain, Behavior.SweepScene.BlockX, Behavior.SweepScene.BlockY, (vx, _) => 10 + 20 * vx);
+            TerrainWorld terrain = SweepScene.Terrain();
+            SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (vx, _) => 10 + 20 * vx);
             var world = new PhysicsWorld(seq.Origin) { Transition = new RetailTransition(terrain) };
-            var p = new Position(Behavior.SweepScene.CellId(Behavior.SweepScene.BlockX, Behavior.SweepScene.BlockY, 3, 4), new Vector3(84f, 108f, 0f));
-            p.Frame.Origin = new Vector3(84f, 108f, Behavior.SweepScene.Ground(terrain, p));
-            PhysicsObj obj = Behavior.SweepScene.Walker(world, p);
+            var p = new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 3, 4), new Vector3(84f, 108f, 0f));
+            p.Frame.Origin = new Vector3(84f, 108f, SweepScene.Ground(terrain, p));
+            PhysicsObj obj = SweepScene.Walker(world, p);
             Position start = obj.Position;
             double now = seq.Origin;
             foreach (double d in seq.Dts)

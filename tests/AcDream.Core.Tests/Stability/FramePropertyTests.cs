@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Math;
+using AcDream.Core.Tests.Support;
 using FsCheck;
 using FsCheck.Fluent;
 using Xunit;

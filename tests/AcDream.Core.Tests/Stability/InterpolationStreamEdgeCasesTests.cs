@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Tests.Replay.Harness;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Stability;
@@ -88,14 +89,14 @@ public class InterpolationStreamEdgeCasesTests
         Assert.True(s.Creature.HandleReceivedPosition(p10, 10, 0, true));
         Assert.True(s.Creature.HandleReceivedPosition(p12, 12, 0, true));
         Assert.Equal(2, s.Interpolation!.Count);
-        ulong before = Behavior.SceneTestContext.Hash(s.Creature);
+        ulong before = SceneTestContext.Hash(s.Creature);
         foreach ((ushort ts, float y) in new (ushort, float)[] { (12, 58f), (11, 53f), (10, 51f) })
         {
             Assert.False(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, y, 0f)), ts, 0, true));
             Assert.Equal(2, s.Interpolation.Count);
             Assert.Equal(p12, s.Interpolation.GetNode(1).Position);
             Assert.Equal((ushort)12, s.Creature.GetUpdateTime(PhysicsTimeStamp.Position));
-            Assert.Equal(before, Behavior.SceneTestContext.Hash(s.Creature));
+            Assert.Equal(before, SceneTestContext.Hash(s.Creature));
         }
     }
 

@@ -7,9 +7,8 @@ using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
-using AcDream.Core.Tests.Behavior;
-using AcDream.Core.Tests.Determinism;
 using AcDream.Core.Tests.Replay.Harness;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Stability;

@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Behavior;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Stability;
@@ -31,7 +31,7 @@ public class TimeSlicingAtEdgeValuesTests
     /// <summary>Hash of everything but the clock fields (which the edge cases below assert separately).</summary>
     private static ulong Motion(PhysicsObj o)
     {
-        var h = new Determinism.StateHasher();
+        var h = new StateHasher();
         h.Add(o.Position);
         h.Add(o.Velocity);
         h.Add(o.Acceleration);
@@ -244,7 +244,7 @@ public class TimeSlicingAtEdgeValuesTests
         p.Frame.Origin = new Vector3(100f, 40f, SweepScene.Ground(terrain, p));
         PhysicsObj jumper = SweepScene.Walker(world, p, id: 2);
         walker.SetTranslucency(0.7f, 1.5);
-        var h = new Determinism.StateHasher();
+        var h = new StateHasher();
         double t = origin;
         int total = 0;
         for (int i = 0; i < ticks; i++)

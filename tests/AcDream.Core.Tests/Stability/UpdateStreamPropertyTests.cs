@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Tests.Replay.Harness;
+using AcDream.Core.Tests.Support;
 using FsCheck;
 using FsCheck.Fluent;
 using Xunit;

@@ -3,6 +3,7 @@ using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support.Shared;
 
 namespace AcDream.Core.Benchmarks.Report;
 
@@ -30,8 +31,7 @@ internal sealed class HoltburgWalkScene : StepSceneSim
             // 30 m apart (70 m between rows): each walks a circle of radius 6.24 m, so no two ever meet (object collisions would
             // make the comparison with the fine-step run chaotic).
             float x = 20f + 30f * (i % 4), y = 40f + 70f * (i / 4);
-            var p = new Position(LandDefs.LCoordToGid(0xA9 * 8 + (int)(x / 24f), 0xB4 * 8 + (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, 0f), 45f * i));
-            p.Frame.Origin = new Vector3(x, y, TerrainKit.Ground(terrain, p));
+            Position p = SyntheticTerrain.OnGround(terrain, Holtburg.CentreCell(x, y), x, y, 45f * i);
             walkers[i] = TerrainKit.Walker(World, p, (uint)(i + 1));
             TerrainKit.Walk(walkers[i], new Vector3(0f, 3.12f, 0f), 0.5f);
         }

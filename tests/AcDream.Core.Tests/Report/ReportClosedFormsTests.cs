@@ -4,9 +4,10 @@ using AcDream.Core.Benchmarks.Report;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Report;
 
 /// <summary>The accuracy report's closed forms and error measures (benchmarks/.../Report/ClosedForms.cs, compiled in here),
 /// checked against hand-computed values, including a full error computation on a hand-derived case.</summary>

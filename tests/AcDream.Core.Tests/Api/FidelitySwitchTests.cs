@@ -8,9 +8,11 @@ using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Replay.Harness;
+using AcDream.Core.Tests.Support;
 using Xunit;
+using FlatGroundTransition = AcDream.Core.Tests.Support.FlatGroundTransition;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Api;
 
 /// <summary>Each non-retail fidelity switch changes the tick, in the direction reasoned out in each test.</summary>
 public class FidelitySwitchTests

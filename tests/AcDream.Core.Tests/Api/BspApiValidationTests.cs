@@ -5,9 +5,10 @@ using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Api;
 
 public class BspApiValidationTests
 {

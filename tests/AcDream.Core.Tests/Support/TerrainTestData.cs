@@ -2,9 +2,10 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Tests.Support.Shared;
 using Xunit;
 
-namespace AcDream.Core.Tests;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>
 /// A fact that needs the real Dereth terrain fixtures (heightfield and land height table). They are not in the repository:
@@ -76,16 +77,7 @@ internal static class TerrainTestData
     }
 
     /// <summary>A synthetic table: index i maps to i metres (test-only; the real table is data).</summary>
-    public static LandHeightTable IdentityTable()
-    {
-        var h = new float[256];
-        for (int i = 0; i < h.Length; i++)
-        {
-            h[i] = i;
-        }
-
-        return new LandHeightTable(h);
-    }
+    public static LandHeightTable IdentityTable() => SyntheticTerrain.MetreTable();
 
     /// <summary>81 height indices from a function of the vertex (vx, vy).</summary>
     public static byte[] Heights(Func<int, int, int> f)

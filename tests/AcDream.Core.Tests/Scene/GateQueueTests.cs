@@ -5,9 +5,10 @@ using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Scene;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Scene;
 
 /// <summary>
 /// The gate queue never misses a crossing: against a brute-force double-precision measurement of every queued object, over

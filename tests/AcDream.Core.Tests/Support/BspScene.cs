@@ -8,11 +8,11 @@ using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
-using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support.Shared;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>
 /// Shared builders for static-geometry scenes: boxes as one-sided quads with outward normals, buildings (a BSP shell on
@@ -47,21 +47,10 @@ internal static class BspScene
     public static uint IndoorCell(int index) => ((uint)SweepScene.BlockX << 24) | ((uint)SweepScene.BlockY << 16) | (uint)(0x100 + index);
 
     /// <summary>A quad with corners in order (counter-clockwise seen from the side it faces).</summary>
-    public static Polygon Quad(Vector3 a, Vector3 b, Vector3 c, Vector3 d, short id = 0) =>
-        new(id, new[] { a, b, c, d }, new ushort[] { 0, 1, 2, 3 });
+    public static Polygon Quad(Vector3 a, Vector3 b, Vector3 c, Vector3 d, short id = 0) => BoxShapes.Quad(a, b, c, d, id);
 
     /// <summary>Appends the six outward-facing faces of the box <paramref name="min"/>..<paramref name="max"/>.</summary>
-    public static void AddBox(List<Polygon> polys, Vector3 min, Vector3 max)
-    {
-        float x0 = min.X, y0 = min.Y, z0 = min.Z, x1 = max.X, y1 = max.Y, z1 = max.Z;
-        short id = (short)polys.Count;
-        polys.Add(Quad(new(x1, y0, z0), new(x1, y1, z0), new(x1, y1, z1), new(x1, y0, z1), id++)); // +X
-        polys.Add(Quad(new(x0, y0, z0), new(x0, y0, z1), new(x0, y1, z1), new(x0, y1, z0), id++)); // -X
-        polys.Add(Quad(new(x0, y1, z0), new(x0, y1, z1), new(x1, y1, z1), new(x1, y1, z0), id++)); // +Y
-        polys.Add(Quad(new(x0, y0, z0), new(x1, y0, z0), new(x1, y0, z1), new(x0, y0, z1), id++)); // -Y
-        polys.Add(Quad(new(x0, y0, z1), new(x1, y0, z1), new(x1, y1, z1), new(x0, y1, z1), id++)); // +Z
-        polys.Add(Quad(new(x0, y0, z0), new(x0, y1, z0), new(x1, y1, z0), new(x1, y0, z0), id));   // -Z
-    }
+    public static void AddBox(List<Polygon> polys, Vector3 min, Vector3 max) => BoxShapes.AddBox(polys, min, max);
 
     /// <summary>
     /// Places a building whose shell is <paramref name="shell"/> (local to <paramref name="origin"/>, identity rotation)
@@ -133,18 +122,9 @@ internal static class BspScene
     /// </summary>
     public static PhysicsObj TwoSphereWalker(PhysicsWorld world, in Position p, float r = 0.5f, uint id = 1)
     {
-        PhysicsObj obj = world.CreateObject(id);
         var parts = new SimplePartArray(1, 0) { StepUpHeight = 0.4f, StepDownHeight = 0.4f };
         parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, r), r), new Sphere(new Vector3(0f, 0f, r + 1f), r) });
-        obj.PartArray = parts;
-        obj.MovementManager = new BasicMovementManager();
-        obj.SetState((PhysicsState)PhysicsGlobals.DefaultState & ~PhysicsState.EdgeSlide);
-        if (!obj.EnterWorld(p))
-        {
-            throw new InvalidOperationException("The walker could not enter the world.");
-        }
-
-        return obj;
+        return Walkers.Create(world, id, p, parts, (PhysicsState)PhysicsGlobals.DefaultState & ~PhysicsState.EdgeSlide);
     }
 
     /// <summary>The centre of the walker's single sphere (radius r, resting on its origin).</summary>

@@ -1,6 +1,6 @@
 using FsCheck;
 
-namespace AcDream.Core.Tests;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>Asserts FsCheck properties: a falsified property fails the test with the shrunk counter-example.</summary>
 internal static class PropertyAssert

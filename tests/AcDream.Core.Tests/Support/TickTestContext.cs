@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
 using Xunit;
 
-namespace AcDream.Core.Tests;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>Shared scene builders for the object-tick tests.</summary>
 internal static class TickTestContext

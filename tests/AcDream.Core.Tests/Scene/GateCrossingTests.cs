@@ -4,10 +4,10 @@ using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Scene;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Determinism;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Scene;
 
 /// <summary>
 /// Dormant objects the player's travel carries across the 96 m gate: their crossings are found from the gate queues and applied

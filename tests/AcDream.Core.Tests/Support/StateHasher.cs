@@ -2,7 +2,7 @@ using System;
 using System.Numerics;
 using AcDream.Core.Physics.Math;
 
-namespace AcDream.Core.Tests.Determinism;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>FNV-1a 64 over the exact bits of physics state, for golden-hash determinism tests.</summary>
 internal struct StateHasher

@@ -3,9 +3,10 @@ using System.Numerics;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Scene;
 
 /// <summary>The world tick (CPhysics::UseTime, acclient.c:311334): outer gate, clock handling, isolation, allocation.</summary>
 public class WorldTickTests

@@ -2,9 +2,10 @@ using System.Numerics;
 using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Tests.Replay.Harness;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Replay;
+namespace AcDream.Core.Tests.Allocation;
 
 /// <summary>The managers allocate nothing per update or per tick once the object and its managers exist.</summary>
 public class ManagerAllocationTests

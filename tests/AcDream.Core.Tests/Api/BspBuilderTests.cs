@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Collision.Primitives;
 using Xunit;
 using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Api;
 
 public class BspBuilderTests
 {

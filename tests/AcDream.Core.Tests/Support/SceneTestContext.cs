@@ -4,10 +4,9 @@ using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Determinism;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>Scene builders and a scripted mixed scene that can be run with or without dormancy.</summary>
 internal static class SceneTestContext

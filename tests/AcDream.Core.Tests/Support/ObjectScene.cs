@@ -11,8 +11,9 @@ using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support.Shared;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>Builders for object-collision scenes: flat ground at z = 20 in landblock 0x8080 (and optionally 0x8180), walkers,
 /// obstacles with spheres or cylinder spheres.</summary>
@@ -45,23 +46,9 @@ internal static class ObjectScene
     public static PhysicsObj Creature(PhysicsWorld world, uint id, in Position p, float radius = 0.5f, PhysicsState? state = null,
         IWeenieObject? weenie = null)
     {
-        PhysicsObj obj = world.CreateObject(id);
-        obj.Weenie = weenie ?? WeenieTraits.Creature;
-        var parts = new SimplePartArray(1, 0) { StepUpHeight = 0.6f, StepDownHeight = 0.6f, Height = 2f * radius };
-        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, radius), radius) });
-        obj.PartArray = parts;
-        obj.MovementManager = new BasicMovementManager();
-        if (state is not null)
-        {
-            obj.SetState(state.Value);
-        }
-
-        if (!obj.EnterWorld(p))
-        {
-            throw new InvalidOperationException("The creature could not enter the world.");
-        }
-
-        return obj;
+        SimplePartArray parts = Walkers.OneSphere(radius);
+        parts.Height = 2f * radius;
+        return Walkers.Create(world, id, p, parts, state, weenie ?? WeenieTraits.Creature);
     }
 
     /// <summary>

@@ -5,9 +5,10 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Scene;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Scene;
 
 /// <summary>Scenes pay only for what they use: dormant objects are skipped with results identical to visiting every object.</summary>
 public class SceneTests
@@ -276,7 +277,7 @@ public class SceneGateTrackingTests
 {
     private static ulong MotionHash(PhysicsWorld w)
     {
-        var h = new AcDream.Core.Tests.Determinism.StateHasher();
+        var h = new StateHasher();
         for (int i = 0; i < w.ObjectCount; i++)
         {
             PhysicsObj o = w.GetObject(i);

@@ -1,7 +1,7 @@
 using System;
 using Xunit;
 
-namespace AcDream.Core.Tests;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>
 /// Zero-allocation checks of a steady state. A window of work is measured with

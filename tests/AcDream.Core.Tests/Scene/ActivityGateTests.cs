@@ -2,9 +2,10 @@ using System.Numerics;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Scene;
 
 /// <summary>update_object's bail-outs and the 96 m player-distance gate (acclient.c:323080).</summary>
 public class ActivityGateTests

@@ -3,9 +3,10 @@ using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>Scenes on the real Dereth heightfield (fixtures from ACDREAM_TERRAIN_DIR).</summary>
 public class RealTerrainTests
