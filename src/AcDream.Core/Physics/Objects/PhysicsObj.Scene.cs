@@ -25,9 +25,11 @@ public sealed partial class PhysicsObj
     /// may change what that update does therefore calls <c>Touch</c> before it changes anything: velocity, omega, acceleration,
     /// state bits, transient state, placement (position, frame, heading, cell, parent and children), hooks and anim hooks,
     /// translucency and the other fades, scripts, interpolation and constraints, the part array and every manager seam, network
-    /// events, collision commits. Waking is always bit-identical (a visit of an object with nothing to do repeats retail's visit
-    /// exactly); it only costs visits. Managers and part arrays that change their own idleness call it for their owner too.</para>
-    /// <para>Public setters that deliberately do not wake, each safe because a dormant object's retail update never reads the
+    /// events, collision commits, and a direct call of <see cref="UpdateObject"/> (which would otherwise run on stale
+    /// bookkeeping that the next lazy read overwrites). Waking is always bit-identical (a visit of an object with nothing to
+    /// do repeats retail's visit exactly); it only costs visits. Managers and part arrays that change their own idleness call
+    /// it for their owner too.</para>
+    /// <para>Public mutators that deliberately do not wake, each safe because a dormant object's retail update never reads the
     /// value, nor does the scene's classification or lazy bookkeeping:</para>
     /// <list type="bullet">
     /// <item><see cref="Friction"/>: read only by calc_friction, which runs only in an active step with a non-zero velocity; a
@@ -40,6 +42,11 @@ public sealed partial class PhysicsObj
     /// <item><see cref="Weenie"/>: read only during sweeps (the object's own, which a dormant object never runs, or another
     /// object's sweep against it, which reads the field as it is whether or not the object is dormant).</item>
     /// <item><see cref="LastMoveWasAutonomous"/>: kept for the client; nothing in the physics reads it.</item>
+    /// <item><see cref="NewerEvent"/>: writes only the network timestamps (update_times), read only by the network handlers,
+    /// never by update_object; the handlers that act on a newer event wake the object.</item>
+    /// <item><see cref="AddShadowsToCells"/>, <see cref="RemoveShadowsFromCells"/>: the cells' shadow lists, read only by
+    /// sweeps: other objects' sweeps find the object through them and read its fields as they are, dormant or not; its own
+    /// ethereal check runs only in an active step with CHECK_ETHEREAL set, which keeps an object awake.</item>
     /// </list>
     /// <para>A new public mutator must either call <c>Touch</c> or be added here with its reason; the wake-rule tests
     /// (tests/AcDream.Core.Tests/Scene/WakeRuleTests.cs) enumerate the public members and fail on one that is in neither list.</para>

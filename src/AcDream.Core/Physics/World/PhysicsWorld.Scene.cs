@@ -1,4 +1,3 @@
-using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Scene;
 
 namespace AcDream.Core.Physics.World;
@@ -50,7 +49,4 @@ public sealed partial class PhysicsWorld
 
     /// <summary>Entries the gate queues hold, stale ones included.</summary>
     internal int GateEntryCount => Scene.GateEntryCount;
-
-    /// <summary>Object <paramref name="index"/> (unchecked: 0 &lt;= index &lt; <see cref="ObjectCount"/>).</summary>
-    internal PhysicsObj ObjectAt(int index) => _objects[index];
 }

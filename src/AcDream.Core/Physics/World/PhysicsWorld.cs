@@ -145,6 +145,9 @@ public sealed partial class PhysicsWorld
         return _objects[index];
     }
 
+    /// <summary>Object <paramref name="index"/> (unchecked: 0 &lt;= index &lt; <see cref="ObjectCount"/>).</summary>
+    internal PhysicsObj ObjectAt(int index) => _objects[index];
+
     /// <summary>The object with id <paramref name="id"/> (the first created with that id), or null
     /// (retail <c>CPhysicsObj::GetObjectA</c> through the object maintainer's table, acclient.c:316437).</summary>
     public PhysicsObj? GetObjectById(uint id) => id != 0 && _byId.TryGetValue(id, out PhysicsObj? o) ? o : null;
