@@ -114,7 +114,7 @@ public class GateQueueTests
 
             foreach (PhysicsObj o in queued)
             {
-                Assert.True(queue.IsFar(o._gateSlot) == IsFar(o, player),
+                Assert.True(queue.IsFar(o._scene.GateSlot) == IsFar(o, player),
                     $"seed {seed} step {step}: object {o.Id} at {Distance(o, player):F6} m recorded on the wrong side");
             }
         }

@@ -278,6 +278,7 @@ public sealed partial class PhysicsObj
 
     private void AddFPHook(PhysicsHookType type, double delta, float start, float end, uint userData)
     {
+        // non-retail: the scene's declared effects (retail always adds the hook)
         if ((World.Effects & SceneEffects.Hooks) == 0)
         {
             // A scene without hooks never walks a hook list: the fade takes its end value at once (no hook is created, so

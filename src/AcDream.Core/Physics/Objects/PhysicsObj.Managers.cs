@@ -55,7 +55,11 @@ public sealed partial class PhysicsObj
 
     /// <summary>Stops interpolating.</summary>
     // retail: CPhysicsObj::StopInterpolating (acclient.c:315836)
-    public void StopInterpolating() => PositionManager?.StopInterpolating();
+    public void StopInterpolating()
+    {
+        Touch();
+        PositionManager?.StopInterpolating();
+    }
 
     /// <summary>True while interpolation nodes are queued.</summary>
     // retail: CPhysicsObj::IsInterpolating (acclient.c:315846)
@@ -85,7 +89,11 @@ public sealed partial class PhysicsObj
 
     /// <summary>Stops sticking to an object.</summary>
     // retail: CPhysicsObj::unstick_from_object (acclient.c:315797)
-    public void UnstickFromObject() => PositionManager?.UnStick();
+    public void UnstickFromObject()
+    {
+        Touch();
+        PositionManager?.UnStick();
+    }
 
     /// <summary>True when the object is the world's player.</summary>
     public bool IsPlayer => World.Player == this;

@@ -18,9 +18,10 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::UpdatePhysicsInternal (acclient.c:317700)
     internal void UpdatePhysicsInternal(float quantum, ref Frame frame)
     {
+        // non-retail: fidelity switch (ArithmeticMode.Float32); the retail profile takes the path below
         if (World.Profile.Arithmetic == ArithmeticMode.Float32)
         {
-            UpdatePhysicsInternalFloat32(quantum, ref frame); // fidelity switch, not retail
+            UpdatePhysicsInternalFloat32(quantum, ref frame);
             return;
         }
 
@@ -47,6 +48,7 @@ public sealed partial class PhysicsObj
                 _velocity = v;
             }
 
+            // non-retail: the scene's declared effects (retail always runs calc_friction)
             if ((World.Effects & SceneEffects.Friction) != 0)
             {
                 CalcFriction(quantum, mag2);
@@ -82,7 +84,8 @@ public sealed partial class PhysicsObj
             (float)(q * acc.Y + vel.Y),
             (float)(q * acc.Z + vel.Z));
         Vector3 w = _omega;
-        RotateForProfile(ref frame, new Vector3((float)(q * w.X), (float)(q * w.Y), (float)(q * w.Z))); // retail: frame.GRotate(...)
+        // non-retail: fidelity switches (arithmetic, renormalisation); the retail profile runs frame.GRotate(...)
+        RotateForProfile(ref frame, new Vector3((float)(q * w.X), (float)(q * w.Y), (float)(q * w.Z)));
     }
 
     /// <summary>
@@ -99,6 +102,7 @@ public sealed partial class PhysicsObj
             _acceleration = Vector3.Zero;
             _omega = Vector3.Zero;
         }
+        // non-retail: the scene's declared effects (retail: the GRAVITY state bit alone)
         else if ((_state & PhysicsState.Gravity) != 0 && (World.Effects & SceneEffects.Gravity) != 0)
         {
             _acceleration = new Vector3(0f, 0f, PhysicsGlobals.Gravity);

@@ -62,6 +62,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::HandleUpdateTarget (acclient.c:319966)
     public void HandleUpdateTarget(in TargetInfo info)
     {
+        Touch();
         if (info.ContextId != 0)
         {
             return;

@@ -18,6 +18,9 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::update_object (acclient.c:323080)
     public void UpdateObject()
     {
+        // non-retail: a direct call on a dormant object wakes it first, so that it reads and keeps retail's bookkeeping (the
+        // scene visits only awake objects, for which this does nothing)
+        Touch();
         if (Parent is not null || CellId == 0 || (_state & PhysicsState.Frozen) != 0)
         {
             _transientState &= ~TransientState.Active;
@@ -61,6 +64,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::UpdateObjectInternal (acclient.c:322718)
     internal void UpdateObjectInternal(float quantum)
     {
+        // non-retail: the optional step observer (tests, diagnostics)
         World.StepObserver?.OnStep(this, quantum, World.PhysicsTime);
         if ((_transientState & TransientState.Active) != 0)
         {
@@ -100,6 +104,7 @@ public sealed partial class PhysicsObj
                         newPos.Frame.SetHeading((float)VelocityHeading(_velocity));
                     }
 
+                    // non-retail: a scene without SceneEffects.Collision moves freely (retail: the transition)
                     TransitionSeam sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Transition : FreeSpaceTransition.Instance;
                     if (sweep.FindTransitionalPosition(this, _position, newPos, false, ref _transitionScratch))
                     {
@@ -129,6 +134,7 @@ public sealed partial class PhysicsObj
             }
 
             SceneEffects fx = World.Effects;
+            // non-retail: the scene's declared effects (retail runs all four managers)
             if ((fx & SceneEffects.RootMotion) != 0)
             {
                 DetectionManager?.CheckDetection();
@@ -137,12 +143,14 @@ public sealed partial class PhysicsObj
                 PartArray?.HandleMovement();
             }
 
+            // non-retail: the scene's declared effects (retail runs the position manager)
             if ((fx & SceneEffects.Interpolation) != 0)
             {
                 PositionManager?.UseTime();
             }
         }
 
+        // non-retail: the scene's declared effects (retail runs the particle and script managers)
         if ((World.Effects & SceneEffects.ParticlesAndScripts) != 0)
         {
             ParticleManager?.UpdateParticles();
@@ -159,6 +167,7 @@ public sealed partial class PhysicsObj
         SceneEffects fx = World.Effects;
         if ((_state & PhysicsState.Hidden) == 0)
         {
+            // non-retail: the scene's declared effects (retail runs the part array's root motion)
             if ((fx & SceneEffects.RootMotion) != 0)
             {
                 PartArray?.Update(quantum, ref offset);
@@ -176,18 +185,22 @@ public sealed partial class PhysicsObj
             }
         }
 
+        // non-retail: the scene's declared effects (retail runs the position manager's adjust_offset)
         if ((fx & SceneEffects.Interpolation) != 0)
         {
             PositionManager?.AdjustOffset(ref offset, quantum);
         }
 
-        ApplyExtrapolation(ref offset, quantum); // fidelity switch; nothing under the retail profile
-        CombineForProfile(ref newFrame, offset); // retail profile: newFrame.Combine(_position.Frame, offset)
+        // non-retail: fidelity switch (remote extrapolation); does nothing under the retail profile
+        ApplyExtrapolation(ref offset, quantum);
+        // non-retail: fidelity switches (arithmetic, renormalisation); the retail profile runs newFrame.Combine(_position.Frame, offset)
+        CombineForProfile(ref newFrame, offset);
         if ((_state & PhysicsState.Hidden) == 0)
         {
             UpdatePhysicsInternal(quantum, ref newFrame);
         }
 
+        // non-retail: the scene's declared effects (retail processes the hooks)
         if ((fx & SceneEffects.Hooks) != 0)
         {
             ProcessHooks();

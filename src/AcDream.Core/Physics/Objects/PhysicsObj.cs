@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;
+using AcDream.Core.Physics.Scene;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Objects;
@@ -74,7 +75,7 @@ public sealed partial class PhysicsObj
     public PhysicsState State => _state;
 
     /// <summary>Per-frame state bits (retail <c>transient_state</c>).</summary>
-    public TransientState TransientState => _dormancy == Dormancy.Awake ? _transientState : LazyTransientState();
+    public TransientState TransientState => _scene.Dormancy == Dormancy.Awake ? _transientState : LazyTransientState();
 
     /// <summary>True when the ACTIVE transient bit is set: the object is simulated.</summary>
     public bool IsActive => (TransientState & TransientState.Active) != 0;
@@ -95,22 +96,22 @@ public sealed partial class PhysicsObj
     /// <summary>Client time of the object's last consumed update, seconds (retail <c>update_time</c>).</summary>
     public double UpdateTime
     {
-        get => _dormancy == Dormancy.Awake ? _updateTime : LazyUpdateTime();
-        internal set => _updateTime = value;
+        get => _scene.Dormancy == Dormancy.Awake ? _scene.UpdateTime : LazyUpdateTime();
+        internal set => _scene.UpdateTime = value;
     }
 
     /// <summary>Offset from the player to this object, metres (retail <c>player_vector</c>; (0, 0, 1) until measured).</summary>
     public Vector3 PlayerVector
     {
-        get => _dormancy == Dormancy.Awake ? _playerVector : LazyPlayerVector();
-        private set => _playerVector = value;
+        get => _scene.Dormancy == Dormancy.Awake ? _scene.PlayerVector : LazyPlayerVector();
+        private set => _scene.PlayerVector = value;
     }
 
     /// <summary>Distance to the player, metres (retail <c>player_distance</c>; float.MaxValue until measured).</summary>
     public float PlayerDistance
     {
-        get => _dormancy == Dormancy.Awake ? _playerDistance : LazyPlayerDistance();
-        private set => _playerDistance = value;
+        get => _scene.Dormancy == Dormancy.Awake ? _scene.PlayerDistance : LazyPlayerDistance();
+        private set => _scene.PlayerDistance = value;
     }
 
     /// <summary>Friction coefficient in [0, 1] (retail <c>friction</c>, default 0.95): on walkable ground speed decays as (1 - f)^dt.</summary>

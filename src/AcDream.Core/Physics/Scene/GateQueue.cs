@@ -286,8 +286,8 @@ internal sealed class GateQueue
         _flags[slot] = (byte)((idle ? GateFlags.Idle : 0) | (onWalkable ? GateFlags.OnWalkable : 0));
         Global(o._position, out double x, out double y, out _);
         _grid.Add(slot, r.State >> 1, _flags[slot], x, y, o._position.Frame.Origin.Z, far, out r.Cell, out r.CellIndex);
-        o._gateQueue = this;
-        o._gateSlot = slot;
+        o._scene.GateQueue = this;
+        o._scene.GateSlot = slot;
         AppendIfNear(_ring, slot);
         AppendIfNear(_band, slot);
     }
@@ -337,13 +337,13 @@ internal sealed class GateQueue
     /// <summary>Takes <paramref name="o"/> out of whichever queue holds it (no effect when none does); its band copies go stale.</summary>
     public static void Forget(PhysicsObj o)
     {
-        GateQueue? q = o._gateQueue;
+        GateQueue? q = o._scene.GateQueue;
         if (q is null)
         {
             return;
         }
 
-        int slot = o._gateSlot;
+        int slot = o._scene.GateSlot;
         q._record[slot].State = ((q._record[slot].State >> 1) + 1) << 1; // next generation: its copies are stale
         q._obj[slot] = null;
         q._grid.Remove(q._record[slot].Cell, q._record[slot].CellIndex);
@@ -356,8 +356,8 @@ internal sealed class GateQueue
         q._free[q._freeCount++] = slot;
         q._forgottenSinceRing++;
         q._forgottenSinceBand++;
-        o._gateQueue = null;
-        o._gateSlot = -1;
+        o._scene.GateQueue = null;
+        o._scene.GateSlot = -1;
     }
 
     private GateBand? BandOf(in GateHit h) => h.Band == FromRing ? _ring : h.Band == FromBand ? _band : null;

@@ -3,6 +3,7 @@ using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
+using AcDream.Core.Physics.Scene;
 
 namespace AcDream.Core.Physics.World;
 
@@ -38,9 +39,7 @@ public sealed partial class PhysicsWorld
         CurrentTime = startTime;
         PhysicsTime = startTime;
         LastUpdate = startTime;
-        _tickTimeNow = _tickTimePrev = startTime;
-        _consumedNow = _consumedPrev = startTime;
-        _pingPongNow = _pingPongPrev = startTime;
+        Scene = new SceneTicker(this, startTime);
         for (int i = 0; i < hookPoolCapacity; i++)
         {
             ReturnFPHook(new FPHook());
@@ -69,7 +68,7 @@ public sealed partial class PhysicsWorld
         {
             if (value != _objectMaintenanceActive)
             {
-                WakeGatedDormant();
+                Scene.WakeGatedDormant();
                 _objectMaintenanceActive = value;
             }
         }
@@ -125,7 +124,7 @@ public sealed partial class PhysicsWorld
 
             if (value != _player)
             {
-                WakeGatedDormant();
+                Scene.WakeGatedDormant();
                 value?.Touch();
             }
 
@@ -145,6 +144,9 @@ public sealed partial class PhysicsWorld
 
         return _objects[index];
     }
+
+    /// <summary>Object <paramref name="index"/> (unchecked: 0 &lt;= index &lt; <see cref="ObjectCount"/>).</summary>
+    internal PhysicsObj ObjectAt(int index) => _objects[index];
 
     /// <summary>The object with id <paramref name="id"/> (the first created with that id), or null
     /// (retail <c>CPhysicsObj::GetObjectA</c> through the object maintainer's table, acclient.c:316437).</summary>
@@ -197,10 +199,10 @@ public sealed partial class PhysicsWorld
 
         if (obj == _player)
         {
-            WakeGatedDormant();
+            Scene.WakeGatedDormant();
         }
 
-        RemoveFromVisiting(obj);
+        Scene.RemoveFromVisiting(obj);
         int i = obj.WorldIndex;
         Array.Copy(_objects, i + 1, _objects, i, _count - i - 1);
         _count--;
@@ -282,7 +284,7 @@ public sealed partial class PhysicsWorld
         }
         else
         {
-            UseTimeScene();
+            LastTickVisitCount = Scene.Tick();
         }
 
         LastUpdate = CurrentTime;

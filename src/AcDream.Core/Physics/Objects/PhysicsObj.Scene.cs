@@ -1,0 +1,99 @@
+using AcDream.Core.Physics.Scene;
+
+namespace AcDream.Core.Physics.Objects;
+
+/// <summary>
+/// What the object keeps for the scene (<see cref="SceneTicker"/>): its slot, the wake, and the lazily evaluated bookkeeping
+/// behind <see cref="UpdateTime"/>, <see cref="PlayerVector"/>, <see cref="PlayerDistance"/> and <see cref="TransientState"/>.
+/// Not retail.
+/// </summary>
+public sealed partial class PhysicsObj
+{
+    /// <summary>The scene's record of this object (dormancy, visiting list, gate queue) and the retail fields it evaluates lazily.</summary>
+    internal SceneSlot _scene = new();
+
+    /// <summary>True while the scene skips this object because its retail update would change nothing but bookkeeping.</summary>
+    public bool IsDormant => _scene.Dormancy != Dormancy.Awake;
+
+    /// <summary>
+    /// Wakes the object if it is dormant: its bookkeeping (ACTIVE bit, update time, player vector) is brought to the values retail
+    /// would hold now, and the scene visits it again from the next point in the tick order.
+    /// </summary>
+    /// <remarks>
+    /// <para>The wake rule. An object is dormant only while its retail update would change nothing but the bookkeeping the scene
+    /// evaluates lazily (<see cref="SceneTicker.ClassifyForSleep"/>, <see cref="SceneTicker.IsIdle"/>). Every public member that
+    /// may change what that update does therefore calls <c>Touch</c> before it changes anything: velocity, omega, acceleration,
+    /// state bits, transient state, placement (position, frame, heading, cell, parent and children), hooks and anim hooks,
+    /// translucency and the other fades, scripts, interpolation and constraints, the part array and every manager seam, network
+    /// events, collision commits, and a direct call of <see cref="UpdateObject"/> (which would otherwise run on stale
+    /// bookkeeping that the next lazy read overwrites). Waking is always bit-identical (a visit of an object with nothing to
+    /// do repeats retail's visit exactly); it only costs visits. Managers and part arrays that change their own idleness call
+    /// it for their owner too.</para>
+    /// <para>Public mutators that deliberately do not wake, each safe because a dormant object's retail update never reads the
+    /// value, nor does the scene's classification or lazy bookkeeping:</para>
+    /// <list type="bullet">
+    /// <item><see cref="Friction"/>: read only by calc_friction, which runs only in an active step with a non-zero velocity; a
+    /// dormant object either takes no active step (bailed, far, static) or is idle with a +0 velocity, and one that must move
+    /// once near is woken before its first active step, so it reads the value then, as retail does.</item>
+    /// <item><see cref="Elasticity"/>: read only by the collision response of the object's own sweep; a dormant object never
+    /// sweeps (idle steps leave its origin unchanged, which takes the no-sweep branch of UpdateObjectInternal).</item>
+    /// <item><see cref="TranslucencyOriginal"/>: read only by <see cref="SetTranslucencyInternal"/>, which wakes the object
+    /// before it reads it.</item>
+    /// <item><see cref="Weenie"/>: read only during sweeps (the object's own, which a dormant object never runs, or another
+    /// object's sweep against it, which reads the field as it is whether or not the object is dormant).</item>
+    /// <item><see cref="LastMoveWasAutonomous"/>: kept for the client; nothing in the physics reads it.</item>
+    /// <item><see cref="NewerEvent"/>: writes only the network timestamps (update_times), read only by the network handlers,
+    /// never by update_object; the handlers that act on a newer event wake the object.</item>
+    /// <item><see cref="AddShadowsToCells"/>, <see cref="RemoveShadowsFromCells"/>: the cells' shadow lists, read only by
+    /// sweeps: other objects' sweeps find the object through them and read its fields as they are, dormant or not; its own
+    /// ethereal check runs only in an active step with CHECK_ETHEREAL set, which keeps an object awake.</item>
+    /// </list>
+    /// <para>A new public mutator must either call <c>Touch</c> or be added here with its reason; the wake-rule tests
+    /// (tests/AcDream.Core.Tests/Scene/WakeRuleTests.cs) enumerate the public members and fail on one that is in neither list.</para>
+    /// </remarks>
+    internal void Touch()
+    {
+        if (_scene.Dormancy != Dormancy.Awake)
+        {
+            World.Scene.WakeDormant(this);
+        }
+        else if (!_scene.InActiveList && !_scene.PendingWake && WorldIndex >= 0)
+        {
+            World.Scene.EnqueueWake(this);
+        }
+    }
+
+    // The dormant getters: bring the lazily evaluated bookkeeping to the values retail would hold now, then read the field.
+    private void MaterializeIfLazy()
+    {
+        if (_scene.IsLazy)
+        {
+            SceneTicker scene = World.Scene;
+            scene.Materialize(this, scene.IsVisitedThisTick(this));
+        }
+    }
+
+    private double LazyUpdateTime()
+    {
+        MaterializeIfLazy();
+        return _scene.UpdateTime;
+    }
+
+    private TransientState LazyTransientState()
+    {
+        MaterializeIfLazy();
+        return _transientState;
+    }
+
+    private System.Numerics.Vector3 LazyPlayerVector()
+    {
+        MaterializeIfLazy();
+        return _scene.PlayerVector;
+    }
+
+    private float LazyPlayerDistance()
+    {
+        MaterializeIfLazy();
+        return _scene.PlayerDistance;
+    }
+}
