@@ -25,7 +25,7 @@ namespace AcDream.Core.Benchmarks;
 public class SweepBenchmarks
 {
     private const int LongSteps = 20;
-    private RetailTransition _sweep = null!;
+    private RetailSweep _sweep = null!;
     private PhysicsObj _flat = null!, _slope = null!, _hill = null!, _edge = null!;
     private Position _flatTo, _flatFar, _slopeTo, _slopeFar, _hillTo, _hillFar, _edgeTo, _edgeFar;
 
@@ -45,8 +45,8 @@ public class SweepBenchmarks
         AddBlock(terrain, 0x50, 0x50, (vx, _) => 10 + 27 * vx);
         AddBlock(terrain, 0x60, 0x60, (vx, _) => vx <= 4 ? 10 : 10 + 40 * (vx - 4));
         var world = new PhysicsWorld(0.0);
-        _sweep = new RetailTransition(terrain);
-        world.Transition = _sweep;
+        _sweep = new RetailSweep(terrain);
+        world.Sweep = _sweep;
 
         _flat = Walker(world, 1, Pos(0x40, 0x40, 100f, 100f, 20f));
         _flatTo = Moved(_flat.Position, 0.2f);
@@ -64,35 +64,35 @@ public class SweepBenchmarks
 
     /// <summary>One 0.2 m sweep on flat ground.</summary>
     [Benchmark]
-    public Transition? FlatCall() => _sweep.Transition(_flat, _flat.Position, _flatTo, false);
+    public Transition? FlatCall() => _sweep.RunTransition(_flat, _flat.Position, _flatTo, false);
 
     /// <summary>A 10 m sweep on flat ground; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? FlatStep() => _sweep.Transition(_flat, _flat.Position, _flatFar, false);
+    public Transition? FlatStep() => _sweep.RunTransition(_flat, _flat.Position, _flatFar, false);
 
     /// <summary>One 0.2 m sweep up a walkable slope.</summary>
     [Benchmark]
-    public Transition? SlopeCall() => _sweep.Transition(_slope, _slope.Position, _slopeTo, false);
+    public Transition? SlopeCall() => _sweep.RunTransition(_slope, _slope.Position, _slopeTo, false);
 
     /// <summary>A 10 m sweep up a walkable slope; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? SlopeStep() => _sweep.Transition(_slope, _slope.Position, _slopeFar, false);
+    public Transition? SlopeStep() => _sweep.RunTransition(_slope, _slope.Position, _slopeFar, false);
 
     /// <summary>One 0.2 m sweep into a too-steep hillside (cliff slide, rejected step).</summary>
     [Benchmark]
-    public Transition? HillsideCall() => _sweep.Transition(_hill, _hill.Position, _hillTo, false);
+    public Transition? HillsideCall() => _sweep.RunTransition(_hill, _hill.Position, _hillTo, false);
 
     /// <summary>A 10 m sweep into the hillside; mean per step (the sweep stops at the first blocked step).</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? HillsideStep() => _sweep.Transition(_hill, _hill.Position, _hillFar, false);
+    public Transition? HillsideStep() => _sweep.RunTransition(_hill, _hill.Position, _hillFar, false);
 
     /// <summary>One 0.2 m sweep across a landblock edge (cell change, block offset).</summary>
     [Benchmark]
-    public Transition? EdgeCall() => _sweep.Transition(_edge, _edge.Position, _edgeTo, false);
+    public Transition? EdgeCall() => _sweep.RunTransition(_edge, _edge.Position, _edgeTo, false);
 
     /// <summary>A 10 m sweep across a landblock edge; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? EdgeStep() => _sweep.Transition(_edge, _edge.Position, _edgeFar, false);
+    public Transition? EdgeStep() => _sweep.RunTransition(_edge, _edge.Position, _edgeFar, false);
 
     private static Position Pos(int bx, int by, float x, float y, float z) =>
         new(LandDefs.LCoordToGid(bx * 8 + (int)(x / 24f), by * 8 + (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, z), 90f));
@@ -161,7 +161,7 @@ public class WorldSweepBenchmarks
         var rnd = new Random(7);
         TerrainWorld terrain = LoadHoltburg(rnd);
         _world = new PhysicsWorld(0.0);
-        _world.Transition = new RetailTransition(terrain);
+        _world.Sweep = new RetailSweep(terrain);
         int placed = 0;
         for (int i = 0; placed < N && i < N * 4; i++)
         {

@@ -134,7 +134,7 @@ public class DtSequencePropertyTests
         {
             TerrainWorld terrain = Behavior.SweepScene.Terrain();
             Behavior.SweepScene.AddBlock(terrain, Behavior.SweepScene.BlockX, Behavior.SweepScene.BlockY, (vx, _) => 10 + 20 * vx);
-            var world = new PhysicsWorld(seq.Origin) { Transition = new RetailTransition(terrain) };
+            var world = new PhysicsWorld(seq.Origin) { Sweep = new RetailSweep(terrain) };
             var p = new Position(Behavior.SweepScene.CellId(Behavior.SweepScene.BlockX, Behavior.SweepScene.BlockY, 3, 4), new Vector3(84f, 108f, 0f));
             p.Frame.Origin = new Vector3(84f, 108f, Behavior.SweepScene.Ground(terrain, p));
             PhysicsObj obj = Behavior.SweepScene.Walker(world, p);
@@ -166,7 +166,7 @@ public class DtSequencePropertyTests
             foreach (bool awake in new[] { true, false })
             {
                 PhysicsWorld world = TickTestContext.World(seq.Origin);
-                world.Transition = new FlatGroundTransition();
+                world.Sweep = new FlatGroundTransition();
                 PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(12f, 12f, 0f));
                 if (awake)
                 {

@@ -171,7 +171,7 @@ public sealed partial class PhysicsObj
     public bool CheckCollision(PhysicsObj mover)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        if ((_state & PhysicsState.Static) != 0 || World.Transition is not RetailTransition retail)
+        if ((_state & PhysicsState.Static) != 0 || World.Sweep is not RetailSweep retail)
         {
             return false;
         }

@@ -22,7 +22,7 @@ public sealed class ManagerScene
     {
         World = new PhysicsWorld(startTime);
         Ground = new FlatGroundTransition();
-        World.Transition = Ground;
+        World.Sweep = Ground;
         Player = World.CreateObject(1);
         Player.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f };
         Player.EnterWorld(At(playerOrigin ?? new Vector3(96f, 96f, 0f)));

@@ -8,7 +8,7 @@ using AcDream.Core.Physics.Objects.Parts;
 namespace AcDream.Core.Physics.Collision.Sweep;
 
 /// <summary>The object-collision half of the retail sweep: shadows, overlap checks and the object collision reports.</summary>
-public sealed partial class RetailTransition
+public sealed partial class RetailSweep
 {
     private readonly CellArray _crossCells = new();
 

@@ -11,12 +11,12 @@ using AcDream.Core.Physics.World;
 namespace AcDream.Core.Physics.Collision.Sweep;
 
 /// <summary>
-/// The retail collision sweep plugged into the object tick: <see cref="PhysicsWorld.Transition"/> set to an instance of
+/// The retail collision sweep plugged into the object tick: <see cref="PhysicsWorld.Sweep"/> set to an instance of
 /// this class makes every object move through the cells of <see cref="Cells"/> (outdoor terrain today) exactly as
 /// retail's <c>CPhysicsObj::transition</c> moves it, and answers placements and the collision response.
 /// </summary>
 /// <remarks>One instance per world: it owns the world's <see cref="TransitionPool"/>. Nothing here allocates per call.</remarks>
-public sealed partial class RetailTransition : TransitionSeam
+public sealed partial class RetailSweep : CollisionSweep
 {
     private Transition? _committed;
 
@@ -28,7 +28,7 @@ public sealed partial class RetailTransition : TransitionSeam
 
     /// <summary>Creates the sweep over <paramref name="cells"/>.</summary>
     /// <exception cref="ArgumentNullException"><paramref name="cells"/> is null.</exception>
-    public RetailTransition(ICellSource cells)
+    public RetailSweep(ICellSource cells)
     {
         ArgumentNullException.ThrowIfNull(cells);
         Cells = cells;
@@ -85,7 +85,7 @@ public sealed partial class RetailTransition : TransitionSeam
     /// </summary>
     /// <exception cref="ArgumentException">A position has a NaN or infinite origin (nothing is changed).</exception>
     // retail: CPhysicsObj::transition (acclient.c:320060)
-    public Transition? Transition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove)
+    public Transition? RunTransition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove)
     {
         ArgumentNullException.ThrowIfNull(obj);
         if (!VectorMath.IsFinite(oldPos.Frame.Origin) || !VectorMath.IsFinite(newPos.Frame.Origin))
@@ -132,9 +132,9 @@ public sealed partial class RetailTransition : TransitionSeam
 
     /// <inheritdoc />
     // retail: CPhysicsObj::transition (acclient.c:320060), result read by UpdateObjectInternal (acclient.c:322718)
-    public override bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
+    public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
     {
-        Transition? t = Transition(obj, oldPos, newPos, adminMove);
+        Transition? t = RunTransition(obj, oldPos, newPos, adminMove);
         if (t is null)
         {
             return false;
