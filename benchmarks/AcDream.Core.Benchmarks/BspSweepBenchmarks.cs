@@ -102,15 +102,15 @@ public class BspSweepBenchmarks
 
     /// <summary>One 0.2 m sweep sliding along the wall at 10 degrees.</summary>
     [Benchmark]
-    public Transition? AlongWall() => _sweep.RunTransition(_wall, _wall.Position, _wallTo, false);
+    public object? AlongWall() => _sweep.RunTransition(_wall, _wall.Position, _wallTo, false);
 
     /// <summary>One 0.2 m sweep into the first stair riser (step up onto the tread).</summary>
     [Benchmark]
-    public Transition? UpStair() => _sweep.RunTransition(_stair, _stair.Position, _stairTo, false);
+    public object? UpStair() => _sweep.RunTransition(_stair, _stair.Position, _stairTo, false);
 
     /// <summary>One 0.2 m sweep between the pillars (no contact with the building).</summary>
     [Benchmark]
-    public Transition? BetweenPillars() => _sweep.RunTransition(_open, _open.Position, _openTo, false);
+    public object? BetweenPillars() => _sweep.RunTransition(_open, _open.Position, _openTo, false);
 
     private static Position Pos(float x, float y, float z, float heading) =>
         new(LandDefs.LCoordToGid(0x40 * 8 + (int)(x / 24f), 0x40 * 8 + (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, z), heading));

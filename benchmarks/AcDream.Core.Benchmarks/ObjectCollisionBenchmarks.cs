@@ -76,15 +76,15 @@ public class ObjectCollisionBenchmarks
 
     /// <summary>A 0.2 m sweep along the lane: every shadow of the mover's cells is tested, none is hit.</summary>
     [Benchmark]
-    public Transition? LaneCall() => _sweep.RunTransition(_mover, _mover.Position, _laneTo, false);
+    public object? LaneCall() => _sweep.RunTransition(_mover, _mover.Position, _laneTo, false);
 
     /// <summary>A 10 m sweep along the lane; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? LaneStep() => _sweep.RunTransition(_mover, _mover.Position, _laneFar, false);
+    public object? LaneStep() => _sweep.RunTransition(_mover, _mover.Position, _laneFar, false);
 
     /// <summary>A 0.2 m sweep into a creature: the step slides or collides.</summary>
     [Benchmark]
-    public Transition? BlockedCall() => _sweep.RunTransition(_mover, _blockedFrom, _blockedTo, false);
+    public object? BlockedCall() => _sweep.RunTransition(_mover, _blockedFrom, _blockedTo, false);
 
     /// <summary>One world tick: 101 walkers, each sweeping against the crowd; mean per tick.</summary>
     [Benchmark(OperationsPerInvoke = Ticks)]

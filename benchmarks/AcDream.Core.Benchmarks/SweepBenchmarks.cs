@@ -64,35 +64,35 @@ public class SweepBenchmarks
 
     /// <summary>One 0.2 m sweep on flat ground.</summary>
     [Benchmark]
-    public Transition? FlatCall() => _sweep.RunTransition(_flat, _flat.Position, _flatTo, false);
+    public object? FlatCall() => _sweep.RunTransition(_flat, _flat.Position, _flatTo, false);
 
     /// <summary>A 10 m sweep on flat ground; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? FlatStep() => _sweep.RunTransition(_flat, _flat.Position, _flatFar, false);
+    public object? FlatStep() => _sweep.RunTransition(_flat, _flat.Position, _flatFar, false);
 
     /// <summary>One 0.2 m sweep up a walkable slope.</summary>
     [Benchmark]
-    public Transition? SlopeCall() => _sweep.RunTransition(_slope, _slope.Position, _slopeTo, false);
+    public object? SlopeCall() => _sweep.RunTransition(_slope, _slope.Position, _slopeTo, false);
 
     /// <summary>A 10 m sweep up a walkable slope; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? SlopeStep() => _sweep.RunTransition(_slope, _slope.Position, _slopeFar, false);
+    public object? SlopeStep() => _sweep.RunTransition(_slope, _slope.Position, _slopeFar, false);
 
     /// <summary>One 0.2 m sweep into a too-steep hillside (cliff slide, rejected step).</summary>
     [Benchmark]
-    public Transition? HillsideCall() => _sweep.RunTransition(_hill, _hill.Position, _hillTo, false);
+    public object? HillsideCall() => _sweep.RunTransition(_hill, _hill.Position, _hillTo, false);
 
     /// <summary>A 10 m sweep into the hillside; mean per step (the sweep stops at the first blocked step).</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? HillsideStep() => _sweep.RunTransition(_hill, _hill.Position, _hillFar, false);
+    public object? HillsideStep() => _sweep.RunTransition(_hill, _hill.Position, _hillFar, false);
 
     /// <summary>One 0.2 m sweep across a landblock edge (cell change, block offset).</summary>
     [Benchmark]
-    public Transition? EdgeCall() => _sweep.RunTransition(_edge, _edge.Position, _edgeTo, false);
+    public object? EdgeCall() => _sweep.RunTransition(_edge, _edge.Position, _edgeTo, false);
 
     /// <summary>A 10 m sweep across a landblock edge; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? EdgeStep() => _sweep.RunTransition(_edge, _edge.Position, _edgeFar, false);
+    public object? EdgeStep() => _sweep.RunTransition(_edge, _edge.Position, _edgeFar, false);
 
     private static Position Pos(int bx, int by, float x, float y, float z) =>
         new(LandDefs.LCoordToGid(bx * 8 + (int)(x / 24f), by * 8 + (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, z), 90f));

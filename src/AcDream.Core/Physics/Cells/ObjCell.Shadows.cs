@@ -73,7 +73,7 @@ public abstract partial class ObjCell
     /// one answers other than OK. An initial placement tests no objects.
     /// </summary>
     // retail: CObjCell::find_obj_collisions (acclient.c:347141)
-    protected TransitionState FindShadowObjCollisions(Transition transition)
+    private protected TransitionState FindShadowObjCollisions(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         TransitionState result = TransitionState.Ok;
