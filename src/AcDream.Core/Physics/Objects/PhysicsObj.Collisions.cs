@@ -16,7 +16,7 @@ public sealed partial class PhysicsObj
     /// The object's contact as seen by a sweep: false when it moves away from its contact plane faster than EPSILON.
     /// </summary>
     // retail: CPhysicsObj::check_contact (acclient.c:316535)
-    public bool CheckContact(bool contact)
+    internal bool CheckContact(bool contact)
     {
         if ((_transientState & TransientState.Contact) != 0)
         {

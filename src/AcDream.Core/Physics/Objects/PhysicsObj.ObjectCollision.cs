@@ -216,7 +216,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>True when this object, where it stands, overlaps an object shadowed in any cell it overlaps.</summary>
     // retail: CPhysicsObj::ethereal_check_for_collisions (acclient.c:317831)
-    public bool EtherealCheckForCollisions()
+    internal bool EtherealCheckForCollisions()
     {
         for (int i = 0; i < NumShadowObjects; i++)
         {

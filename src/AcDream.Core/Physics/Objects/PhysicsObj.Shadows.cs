@@ -15,14 +15,14 @@ public sealed partial class PhysicsObj
 
     /// <summary>Shadows made on the first placement: enough for one sphere on a cell corner (4 cells), so that walking
     /// around allocates nothing; more are made only for objects overlapping more cells.</summary>
-    public const int InitialShadowCapacity = 4;
+    internal const int InitialShadowCapacity = 4;
 
     /// <summary>Number of shadows in use. Retail: <c>num_shadow_objects</c>.</summary>
-    public int NumShadowObjects { get; private set; }
+    internal int NumShadowObjects { get; private set; }
 
     /// <summary>The shadows in use, one per overlapped cell (a shadow's <see cref="ShadowObj.Cell"/> is null when that
     /// cell is not loaded). Retail: <c>shadow_objects</c>.</summary>
-    public ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
+    internal ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
 
     /// <summary>
     /// Puts a shadow of the object (and of its attached children) in every cell of <paramref name="cellArray"/>; a particle
@@ -79,7 +79,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Takes every shadow of the object (and of its attached children) out of its cell.</summary>
     // retail: CPhysicsObj::remove_shadows_from_cells (acclient.c:318417)
-    public void RemoveShadowsFromCells()
+    internal void RemoveShadowsFromCells()
     {
         for (int i = 0; i < NumShadowObjects; i++)
         {

@@ -8,8 +8,8 @@ namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>
 /// The BSP as a collision body of the sweep: the entry points a cell or a physics part calls with the transition's
-/// spheres already in the tree's local space (<see cref="SpherePath.CacheLocalSpaceSphere"/>), and their helpers.
-/// Results go back to landblock space through <see cref="SpherePath.LocalSpacePos"/> and the owner's scale.
+/// spheres already in the tree's local space (the sphere path's <c>CacheLocalSpaceSphere</c>), and their helpers.
+/// Results go back to landblock space through the sphere path's <c>LocalSpacePos</c> and the owner's scale.
 /// </summary>
 public sealed partial class BspTree
 {

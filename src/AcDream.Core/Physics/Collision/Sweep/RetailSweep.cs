@@ -12,7 +12,7 @@ namespace AcDream.Core.Physics.Collision.Sweep;
 /// this class makes every object move through the cells of <see cref="Cells"/> (outdoor terrain today) exactly as
 /// retail's <c>CPhysicsObj::transition</c> moves it, and answers placements and the collision response.
 /// </summary>
-/// <remarks>One instance per world: it owns the world's <see cref="TransitionPool"/>. Nothing here allocates per call.</remarks>
+/// <remarks>One instance per world: it owns the world's pool of ten transitions (retail's <c>CTransition::transit</c>). Nothing here allocates per call.</remarks>
 public sealed class RetailSweep : CollisionSweep
 {
     /// <summary>
