@@ -38,6 +38,44 @@ public sealed partial class PhysicsObj
     private Vector3 _playerVector;
     internal float _playerDistance;
 
+    /// <summary>The scene queued the object to join its active list at the next merge.</summary>
+    internal void MarkPendingWake() => _pendingWake = true;
+
+    /// <summary>The scene merged the object's pending wake, or dropped it with the object.</summary>
+    internal void ClearPendingWake() => _pendingWake = false;
+
+    /// <summary>The scene counts the object awake again.</summary>
+    internal void MarkAwake() => _dormancy = Dormancy.Awake;
+
+    /// <summary>The scene put the object in (<paramref name="value"/> true) or took it out of its active list.</summary>
+    internal void SetInActiveList(bool value) => _inActiveList = value;
+
+    /// <summary>
+    /// The scene put the object to sleep in scene tick <paramref name="tick"/>: it leaves the active list with
+    /// <paramref name="dormancy"/> and remembers the ACTIVE bit it slept with.
+    /// </summary>
+    internal void EnterDormancy(Dormancy dormancy, long tick)
+    {
+        _inActiveList = false;
+        _dormancy = dormancy;
+        _sleepTick = tick;
+        _sleepPhaseActive = (_transientState & TransientState.Active) != 0;
+    }
+
+    /// <summary>The object now waits in slot <paramref name="slot"/> of the gate queue <paramref name="queue"/>.</summary>
+    internal void EnterGateQueue(GateQueue queue, int slot)
+    {
+        _gateQueue = queue;
+        _gateSlot = slot;
+    }
+
+    /// <summary>The object left its gate queue.</summary>
+    internal void LeaveGateQueue()
+    {
+        _gateQueue = null;
+        _gateSlot = -1;
+    }
+
     /// <summary>True while the scene skips this object because its retail update would change nothing but bookkeeping.</summary>
     public bool IsDormant => _dormancy != Dormancy.Awake;
 

@@ -286,8 +286,7 @@ internal sealed class GateQueue
         _flags[slot] = (byte)((idle ? GateFlags.Idle : 0) | (onWalkable ? GateFlags.OnWalkable : 0));
         Global(o._position, out double x, out double y, out _);
         _grid.Add(slot, r.State >> 1, _flags[slot], x, y, o._position.Frame.Origin.Z, far, out r.Cell, out r.CellIndex);
-        o._gateQueue = this;
-        o._gateSlot = slot;
+        o.EnterGateQueue(this, slot);
         AppendIfNear(_ring, slot);
         AppendIfNear(_band, slot);
     }
@@ -356,8 +355,7 @@ internal sealed class GateQueue
         q._free[q._freeCount++] = slot;
         q._forgottenSinceRing++;
         q._forgottenSinceBand++;
-        o._gateQueue = null;
-        o._gateSlot = -1;
+        o.LeaveGateQueue();
     }
 
     private GateBand? BandOf(in GateHit h) => h.Band == FromRing ? _ring : h.Band == FromBand ? _band : null;

@@ -154,14 +154,14 @@ public sealed partial class PhysicsWorld
         }
 
         _pending[_pendingCount++] = obj;
-        obj._pendingWake = true;
+        obj.MarkPendingWake();
     }
 
     /// <summary>Wakes a dormant object: materialises its bookkeeping and schedules its visits.</summary>
     internal void WakeDormant(PhysicsObj obj)
     {
         obj.Materialize(IsVisitedThisTick(obj));
-        obj._dormancy = Dormancy.Awake;
+        obj.MarkAwake();
         GateForget(obj);
         EnqueueWake(obj);
     }
@@ -204,7 +204,7 @@ public sealed partial class PhysicsWorld
         Array.Copy(_active, lo, _active, lo + 1, _activeCount - lo);
         _active[lo] = obj;
         _activeCount++;
-        obj._inActiveList = true;
+        obj.SetInActiveList(true);
         if (_inTick && lo <= _activeCursor)
         {
             _activeCursor++;
@@ -224,7 +224,7 @@ public sealed partial class PhysicsWorld
             Array.Copy(_active, at + 1, _active, at, _activeCount - at - 1);
             _activeCount--;
             _active[_activeCount] = null!;
-            obj._inActiveList = false;
+            obj.SetInActiveList(false);
             if (_inTick && at <= _activeCursor)
             {
                 _activeCursor--;
@@ -237,10 +237,10 @@ public sealed partial class PhysicsWorld
             Array.Copy(_pending, at + 1, _pending, at, _pendingCount - at - 1);
             _pendingCount--;
             _pending[_pendingCount] = null!;
-            obj._pendingWake = false;
+            obj.ClearPendingWake();
         }
 
-        obj._dormancy = Dormancy.Awake;
+        obj.MarkAwake();
     }
 
     private void MergePending()
@@ -249,7 +249,7 @@ public sealed partial class PhysicsWorld
         {
             PhysicsObj o = _pending[i];
             _pending[i] = null!;
-            o._pendingWake = false;
+            o.ClearPendingWake();
             if (o.WorldIndex >= 0 && !o._inActiveList && o._dormancy == Dormancy.Awake)
             {
                 InsertActive(o);
@@ -407,10 +407,7 @@ public sealed partial class PhysicsWorld
                 continue;
             }
 
-            o._inActiveList = false;
-            o._dormancy = d;
-            o._sleepTick = _tick;
-            o._sleepPhaseActive = (o._transientState & TransientState.Active) != 0;
+            o.EnterDormancy(d, _tick);
             GateForget(o);
             if (!float.IsNaN(margin) && d != Dormancy.Bailed)
             {
