@@ -26,7 +26,7 @@ namespace AcDream.Core.Benchmarks;
 [MemoryDiagnoser]
 public class BspSweepBenchmarks
 {
-    private RetailTransition _sweep = null!;
+    private RetailSweep _sweep = null!;
     private PhysicsObj _wall = null!, _stair = null!, _open = null!;
     private Position _wallTo, _stairTo, _openTo;
 
@@ -71,8 +71,8 @@ public class BspSweepBenchmarks
         }
 
         var world = new PhysicsWorld(0.0);
-        _sweep = new RetailTransition(cells);
-        world.Transition = _sweep;
+        _sweep = new RetailSweep(cells);
+        world.Sweep = _sweep;
         PhysicsState noEdgeSlide = (PhysicsState)PhysicsGlobals.DefaultState & ~PhysicsState.EdgeSlide;
 
         // Against the wall's south face (y = 100), heading 80: centre 0.5 south of it.
@@ -88,15 +88,15 @@ public class BspSweepBenchmarks
 
     /// <summary>One 0.2 m sweep sliding along the wall at 10 degrees.</summary>
     [Benchmark]
-    public Transition? AlongWall() => _sweep.Transition(_wall, _wall.Position, _wallTo, false);
+    public object? AlongWall() => _sweep.RunTransition(_wall, _wall.Position, _wallTo, false);
 
     /// <summary>One 0.2 m sweep into the first stair riser (step up onto the tread).</summary>
     [Benchmark]
-    public Transition? UpStair() => _sweep.Transition(_stair, _stair.Position, _stairTo, false);
+    public object? UpStair() => _sweep.RunTransition(_stair, _stair.Position, _stairTo, false);
 
     /// <summary>One 0.2 m sweep between the pillars (no contact with the building).</summary>
     [Benchmark]
-    public Transition? BetweenPillars() => _sweep.Transition(_open, _open.Position, _openTo, false);
+    public object? BetweenPillars() => _sweep.RunTransition(_open, _open.Position, _openTo, false);
 
     private static Position Pos(float x, float y, float z, float heading) =>
         new(LandDefs.LCoordToGid(0x40 * 8 + (int)(x / 24f), 0x40 * 8 + (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, z), heading));

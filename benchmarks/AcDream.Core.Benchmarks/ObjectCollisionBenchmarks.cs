@@ -26,7 +26,7 @@ public class ObjectCollisionBenchmarks
     private const int LongSteps = 20;
     private const int Ticks = 10;
     private const double Dt = 0.05;
-    private RetailTransition _sweep = null!;
+    private RetailSweep _sweep = null!;
     private PhysicsWorld _world = null!;
     private PhysicsObj _mover = null!;
     private Position _laneTo, _laneFar, _blockedFrom, _blockedTo;
@@ -39,8 +39,8 @@ public class ObjectCollisionBenchmarks
         TerrainWorld terrain = SyntheticTerrain.Metres();
         SyntheticTerrain.AddBlock(terrain, 0x40, 0x40, (_, _) => 20);
         _world = new PhysicsWorld(0.0);
-        _sweep = new RetailTransition(terrain);
-        _world.Transition = _sweep;
+        _sweep = new RetailSweep(terrain);
+        _world.Sweep = _sweep;
         var rnd = new Random(11);
         for (int i = 0; i < 10; i++)
         {
@@ -66,15 +66,15 @@ public class ObjectCollisionBenchmarks
 
     /// <summary>A 0.2 m sweep along the lane: every shadow of the mover's cells is tested, none is hit.</summary>
     [Benchmark]
-    public Transition? LaneCall() => _sweep.Transition(_mover, _mover.Position, _laneTo, false);
+    public object? LaneCall() => _sweep.RunTransition(_mover, _mover.Position, _laneTo, false);
 
     /// <summary>A 10 m sweep along the lane; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? LaneStep() => _sweep.Transition(_mover, _mover.Position, _laneFar, false);
+    public object? LaneStep() => _sweep.RunTransition(_mover, _mover.Position, _laneFar, false);
 
     /// <summary>A 0.2 m sweep into a creature: the step slides or collides.</summary>
     [Benchmark]
-    public Transition? BlockedCall() => _sweep.Transition(_mover, _blockedFrom, _blockedTo, false);
+    public object? BlockedCall() => _sweep.RunTransition(_mover, _blockedFrom, _blockedTo, false);
 
     /// <summary>One world tick: 101 walkers, each sweeping against the crowd; mean per tick.</summary>
     [Benchmark(OperationsPerInvoke = Ticks)]

@@ -38,7 +38,7 @@ public class RemoteSmoothingBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        _world = new PhysicsWorld(0.0, PhysicsProfile.Retail.With(remoteSmoothing: Smoothing)) { Transition = new FlatGroundTransition() };
+        _world = new PhysicsWorld(0.0, PhysicsProfile.Retail.With(remoteSmoothing: Smoothing)) { Sweep = new ReplayGroundSweep() };
         PhysicsObj player = _world.CreateObject(1);
         player.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f };
         player.EnterWorld(new Position(0x80800001u, new Vector3(96f, 96f, 0f)));

@@ -51,7 +51,7 @@ public class SceneRestingObjectsBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        _world = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition(), GateTracking = Gate };
+        _world = new PhysicsWorld(0.0) { Sweep = new ReplayGroundSweep(), GateTracking = Gate };
         _movers = new PhysicsObj[100];
         for (int i = 0; i < _movers.Length; i++)
         {
@@ -158,7 +158,7 @@ public class SceneEffectsBenchmarks
             "5 +RootMotion" => three | SceneEffects.Hooks | SceneEffects.RootMotion,
             _ => SceneEffects.All,
         };
-        _world = new PhysicsWorld(0.0, hookPoolCapacity: 1100) { Effects = fx, Transition = new FlatGroundTransition() };
+        _world = new PhysicsWorld(0.0, hookPoolCapacity: 1100) { Effects = fx, Sweep = new ReplayGroundSweep() };
         // Every creature within 96 m of the player (a far creature keeps its fades unprocessed, as retail does).
         PhysicsObj player = SceneBench.Item(_world, 1, SceneBench.At(70f, 64f));
         _world.Player = player;

@@ -24,7 +24,7 @@ namespace AcDream.Core.Benchmarks;
 public class SweepBenchmarks
 {
     private const int LongSteps = 20;
-    private RetailTransition _sweep = null!;
+    private RetailSweep _sweep = null!;
     private PhysicsObj _flat = null!, _slope = null!, _hill = null!, _edge = null!;
     private Position _flatTo, _flatFar, _slopeTo, _slopeFar, _hillTo, _hillFar, _edgeTo, _edgeFar;
 
@@ -38,8 +38,8 @@ public class SweepBenchmarks
         SyntheticTerrain.AddBlock(terrain, 0x50, 0x50, (vx, _) => 10 + 27 * vx);
         SyntheticTerrain.AddBlock(terrain, 0x60, 0x60, (vx, _) => vx <= 4 ? 10 : 10 + 40 * (vx - 4));
         var world = new PhysicsWorld(0.0);
-        _sweep = new RetailTransition(terrain);
-        world.Transition = _sweep;
+        _sweep = new RetailSweep(terrain);
+        world.Sweep = _sweep;
 
         _flat = Walker(world, 1, Pos(0x40, 0x40, 100f, 100f, 20f));
         _flatTo = Moved(_flat.Position, 0.2f);
@@ -57,35 +57,35 @@ public class SweepBenchmarks
 
     /// <summary>One 0.2 m sweep on flat ground.</summary>
     [Benchmark]
-    public Transition? FlatCall() => _sweep.Transition(_flat, _flat.Position, _flatTo, false);
+    public object? FlatCall() => _sweep.RunTransition(_flat, _flat.Position, _flatTo, false);
 
     /// <summary>A 10 m sweep on flat ground; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? FlatStep() => _sweep.Transition(_flat, _flat.Position, _flatFar, false);
+    public object? FlatStep() => _sweep.RunTransition(_flat, _flat.Position, _flatFar, false);
 
     /// <summary>One 0.2 m sweep up a walkable slope.</summary>
     [Benchmark]
-    public Transition? SlopeCall() => _sweep.Transition(_slope, _slope.Position, _slopeTo, false);
+    public object? SlopeCall() => _sweep.RunTransition(_slope, _slope.Position, _slopeTo, false);
 
     /// <summary>A 10 m sweep up a walkable slope; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? SlopeStep() => _sweep.Transition(_slope, _slope.Position, _slopeFar, false);
+    public object? SlopeStep() => _sweep.RunTransition(_slope, _slope.Position, _slopeFar, false);
 
     /// <summary>One 0.2 m sweep into a too-steep hillside (cliff slide, rejected step).</summary>
     [Benchmark]
-    public Transition? HillsideCall() => _sweep.Transition(_hill, _hill.Position, _hillTo, false);
+    public object? HillsideCall() => _sweep.RunTransition(_hill, _hill.Position, _hillTo, false);
 
     /// <summary>A 10 m sweep into the hillside; mean per step (the sweep stops at the first blocked step).</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? HillsideStep() => _sweep.Transition(_hill, _hill.Position, _hillFar, false);
+    public object? HillsideStep() => _sweep.RunTransition(_hill, _hill.Position, _hillFar, false);
 
     /// <summary>One 0.2 m sweep across a landblock edge (cell change, block offset).</summary>
     [Benchmark]
-    public Transition? EdgeCall() => _sweep.Transition(_edge, _edge.Position, _edgeTo, false);
+    public object? EdgeCall() => _sweep.RunTransition(_edge, _edge.Position, _edgeTo, false);
 
     /// <summary>A 10 m sweep across a landblock edge; mean per step.</summary>
     [Benchmark(OperationsPerInvoke = LongSteps)]
-    public Transition? EdgeStep() => _sweep.Transition(_edge, _edge.Position, _edgeFar, false);
+    public object? EdgeStep() => _sweep.RunTransition(_edge, _edge.Position, _edgeFar, false);
 
     private static Position Pos(int bx, int by, float x, float y, float z) =>
         new(LandDefs.LCoordToGid(bx * 8 + (int)(x / 24f), by * 8 + (int)(y / 24f)), Frame.FromHeading(new Vector3(x, y, z), 90f));
@@ -125,7 +125,7 @@ public class WorldSweepBenchmarks
         var rnd = new Random(7);
         TerrainWorld terrain = LoadHoltburg(rnd);
         _world = new PhysicsWorld(0.0);
-        _world.Transition = new RetailTransition(terrain);
+        _world.Sweep = new RetailSweep(terrain);
         int placed = 0;
         for (int i = 0; placed < N && i < N * 4; i++)
         {

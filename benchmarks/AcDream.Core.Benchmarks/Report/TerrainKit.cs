@@ -36,7 +36,7 @@ internal static class TerrainKit
 
     /// <summary>A physics world with <paramref name="profile"/> sweeping through <paramref name="terrain"/>.</summary>
     public static PhysicsWorld World(TerrainWorld terrain, PhysicsProfile profile) =>
-        new(0.0, profile) { Transition = new RetailTransition(terrain) };
+        new(0.0, profile) { Sweep = new RetailSweep(terrain) };
 
     /// <summary>A creature: one sphere (0.5 m by default) resting on its origin, step heights 0.6 m, a movement manager (stays active),
     /// <paramref name="state"/> (retail's default when null), placed at <paramref name="p"/>.</summary>

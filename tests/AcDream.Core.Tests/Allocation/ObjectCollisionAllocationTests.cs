@@ -14,7 +14,7 @@ public class ObjectCollisionAllocationTests
     [Fact]
     public void TickingACrowdThatKeepsBumping_AllocatesNothing_AfterWarmUp()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         var listener = new RecordingListenerNoAlloc();
         sweep.ObjectCollisionListener = listener;
         // 25 creatures in a 5 x 5 grid, 1.2 m apart, turning while they walk: they keep meeting, sliding and parting,

@@ -10,7 +10,6 @@ using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Replay.Harness;
 using AcDream.Core.Tests.Support;
 using Xunit;
-using FlatGroundTransition = AcDream.Core.Tests.Support.FlatGroundTransition;
 
 namespace AcDream.Core.Tests.Api;
 
@@ -163,7 +162,7 @@ public class FidelitySwitchTests
         // Float32 arithmetic, no renormalisation, extrapolating remote objects: the switches' code paths must keep the tick
         // allocation-free like the retail path (reports included: they place the body and store the estimate in place).
         PhysicsProfile p = PhysicsProfile.Retail.With(ArithmeticMode.Float32, 0, 2f, RemoteSmoothing.LinearExtrapolation);
-        var world = new PhysicsWorld(0.0, p) { Transition = new FlatGroundTransition() };
+        var world = new PhysicsWorld(0.0, p) { Sweep = new FlatGroundSweep() };
         PhysicsObj player = world.CreateObject(1);
         player.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f };
         Assert.True(player.EnterWorld(ManagerScene.At(new Vector3(60f, 60f, 0f))));
@@ -223,8 +222,8 @@ public class FidelitySwitchTests
         TerrainWorld terrain = SweepScene.Terrain();
         SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 10);
         var world = new PhysicsWorld(0.0, PhysicsProfile.Retail.With(sweepStepScale: scale));
-        var sweep = new RetailTransition(terrain);
-        world.Transition = sweep;
+        var sweep = new RetailSweep(terrain);
+        world.Sweep = sweep;
         PhysicsObj ball = world.CreateObject(1);
         var parts = new SimplePartArray(1, 0);
         parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
@@ -241,7 +240,7 @@ public class FidelitySwitchTests
 
     private static PhysicsObj Creature(PhysicsProfile profile, Vector3 at)
     {
-        var world = new PhysicsWorld(0.0, profile) { Transition = new FlatGroundTransition() };
+        var world = new PhysicsWorld(0.0, profile) { Sweep = new FlatGroundSweep() };
         PhysicsObj player = world.CreateObject(1);
         player.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f };
         Assert.True(player.EnterWorld(ManagerScene.At(new Vector3(60f, 60f, 0f))));

@@ -71,7 +71,7 @@ public class BspObjectCollisionTests
     [Fact]
     public void BspObject_IsShadowedInTheCellsItsSortingSphereCovers()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         // At (95.5, 100): the sorting sphere (r = 1) reaches over the cell edge x = 96 into the neighbouring cell.
         PhysicsObj crate = Crate(world, 10, 95.5f, 100f);
         sweep.CalcCrossCells(crate);

@@ -12,7 +12,7 @@ public class CollisionRecordTests
     [Fact]
     public void CollisionRecords_ListWhatWasHit_ReportEachContactOnce_AndEndAfterOneSecond()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         var listener = new RecordingListener();
         sweep.ObjectCollisionListener = listener;
         PhysicsObj a = ObjectScene.Creature(world, 2, ObjectScene.At(103f, 100f));

@@ -33,7 +33,7 @@ public class CylinderAndScaleTests
     [Fact]
     public void PerfectClipMissile_HitsACylinderSide_AtTheTimeOfImpact()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         // Cylinder r = 0.5, h = 2 at (100, 100); missile sphere r = 0.1 at height 21 moving +x from 99.25 to 99.75.
         ObjectScene.Obstacle(world, 10, ObjectScene.At(100f, 100f), cyl: new[] { new CylSphere(Vector3.Zero, 0.5f, 2f) });
         PhysicsObj m = ObjectScene.Obstacle(world, 50, ObjectScene.At(99.25f, 100f, 21f), spheres: new[] { new Sphere(Vector3.Zero, 0.1f) },

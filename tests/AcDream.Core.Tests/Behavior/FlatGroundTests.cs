@@ -14,7 +14,7 @@ public class FlatGroundTests
 {
     // Flat landblock: every vertex at index 20 of the one-metre table, so the ground is the plane z = 20 (N = (0,0,1),
     // d = -20) in every cell, both triangles.
-    private static (TerrainWorld Terrain, PhysicsWorld World) FlatScene(out RetailTransition sweep)
+    private static (TerrainWorld Terrain, PhysicsWorld World) FlatScene(out RetailSweep sweep)
     {
         TerrainWorld terrain = SweepScene.Terrain();
         SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 20);

@@ -61,7 +61,7 @@ public class FreeFallTests
     [Fact]
     public void SlidingOnFlatGround_DecaysAsOneMinusFToTheT_ThenStops_ThenSleeps()
     {
-        var world = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        var world = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(10f, 10f, 0f));
         Assert.Equal(Vector3.Zero, obj.Acceleration); // on walkable ground
         obj.SetVelocity(new Vector3(10f, 0f, 0f));
@@ -118,7 +118,7 @@ public class FreeFallTests
     [Fact]
     public void BlockedSweep_KeepsOriginButTakesNewOrientation()
     {
-        var world = new PhysicsWorld(0.0) { Transition = new BlockedTransition() };
+        var world = new PhysicsWorld(0.0) { Sweep = new BlockedTransition() };
         PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(10f, 10f, 50f));
         obj.SetVelocity(new Vector3(5f, 0f, 0f));
         obj.SetOmega(new Vector3(0f, 0f, 1f));
@@ -144,7 +144,7 @@ public class FreeFallTests
     [Fact]
     public void RootMotion_IsAppliedOnlyOnWalkableGround_ScaledByScale()
     {
-        var world = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        var world = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(10f, 10f, 0f));
         obj.MovementManager = new BasicMovementManager(); // stays awake at rest
         var parts = (SimplePartArray)obj.PartArray!;

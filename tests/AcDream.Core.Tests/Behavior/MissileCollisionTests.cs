@@ -25,7 +25,7 @@ public class MissileCollisionTests
     [Fact]
     public void PathClippedMissile_StopsAtTheStepOfImpact_ReportsTheHit_AndStopsBeingAMissile()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         var listener = new RecordingListener();
         sweep.ObjectCollisionListener = listener;
         PhysicsObj creature = ObjectScene.Creature(world, 1, ObjectScene.At(100f, 100f));
@@ -62,7 +62,7 @@ public class MissileCollisionTests
     [Fact]
     public void PerfectClip_MovesTheMissileToTheTimeOfImpact()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         ObjectScene.Creature(world, 1, ObjectScene.At(100f, 100f));
         PhysicsObj m = Missile(world, 99.35f, 0f);
 
@@ -74,7 +74,7 @@ public class MissileCollisionTests
         Assert.Equal(99.35f, Sweep(sweep, m, ObjectInfoState.PathClipped, 99.35f, 99.85f), 4);
     }
 
-    internal static float Sweep(RetailTransition sweep, PhysicsObj obj, ObjectInfoState state, float fromX, float toX)
+    internal static float Sweep(RetailSweep sweep, PhysicsObj obj, ObjectInfoState state, float fromX, float toX)
     {
         Transition t = sweep.Pool.Make()!;
         try

@@ -99,7 +99,7 @@ public class ObstacleCollisionTests
     [Fact]
     public void StaticObject_IsCollidedWith_CountsAsEnvironment_AndIsNeverMoved()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         var listener = new RecordingListener();
         sweep.ObjectCollisionListener = listener;
         PhysicsObj s = ObjectScene.Obstacle(world, 10, ObjectScene.At(104f, 100f), spheres: new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) },

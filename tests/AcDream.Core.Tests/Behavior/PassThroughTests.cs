@@ -16,7 +16,7 @@ public class PassThroughTests
     [Fact]
     public void EtherealWalker_PassesThroughACreature_AndRecordsTheTouch()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         var listener = new RecordingListener();
         sweep.ObjectCollisionListener = listener;
         PhysicsObj creature = ObjectScene.Creature(world, 2, ObjectScene.At(102f, 100f));
@@ -37,7 +37,7 @@ public class PassThroughTests
     [Fact]
     public void Walker_PassesThroughAnEtherealObject_WhoseRecordEndsAtOnce()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         var listener = new RecordingListener();
         sweep.ObjectCollisionListener = listener;
         PhysicsObj ghost = ObjectScene.Obstacle(world, 10, ObjectScene.At(102f, 100f), spheres: new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) },
@@ -56,7 +56,7 @@ public class PassThroughTests
     [Fact]
     public void IgnoreCreatures_PassesCreatures_ButNotOtherObjects()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         PhysicsObj creature = ObjectScene.Creature(world, 2, ObjectScene.At(102f, 100f));
         ObjectScene.Obstacle(world, 3, ObjectScene.At(102f, 110f), spheres: new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
         PhysicsObj c = ObjectScene.Creature(world, 1, ObjectScene.At(100f, 100f, heading: 90f));
@@ -98,7 +98,7 @@ public class PassThroughTests
         Assert.Equal(103f, wall.Position.Frame.Origin.X, 3);
     }
 
-    internal static Transition Sweep(RetailTransition sweep, PhysicsObj obj, float fromX, float y, float toX, ObjectInfoState extra)
+    internal static Transition Sweep(RetailSweep sweep, PhysicsObj obj, float fromX, float y, float toX, ObjectInfoState extra)
     {
         Transition t = sweep.Pool.Make()!;
         try

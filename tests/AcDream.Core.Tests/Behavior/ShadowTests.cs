@@ -15,7 +15,7 @@ public class ShadowTests
     private static readonly int EastX = SweepScene.BlockX + 1;
 
     // Every loaded cell of landblocks 0x8080 and 0x8180 that lists a shadow of obj.
-    private static List<uint> CellsListing(RetailTransition sweep, PhysicsObj obj)
+    private static List<uint> CellsListing(RetailSweep sweep, PhysicsObj obj)
     {
         var ids = new List<uint>();
         for (int bx = SweepScene.BlockX; bx <= EastX; bx++)
@@ -56,7 +56,7 @@ public class ShadowTests
     [Fact]
     public void Shadows_FollowTheObject_AcrossCellsAndTheLandblockEdge()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep, twoBlocks: true);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep, twoBlocks: true);
         // Start in the middle of cell (7, 4) of 0x8080 (x = 180) heading east at 2 m/s: after 150 ticks (15 m) it is at world
         // x = 195, 3 m into landblock 0x8180 (cell (0, 4)).
         PhysicsObj c = ObjectScene.Creature(world, 1, ObjectScene.At(180f, 100f, heading: 90f));
@@ -88,7 +88,7 @@ public class ShadowTests
     [Fact]
     public void ObjectAcrossTheLandblockEdge_IsCollidedWith()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep, twoBlocks: true);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep, twoBlocks: true);
         // A creature 2.05 m into landblock 0x8180 (world x = 194.05); the walker comes from world x = 188 in 0.1 m steps
         // (float sums, so its x carries ~1e-4 of rounding: the obstacle sits half a step off the knife edge).
         uint eastCell = SweepScene.CellId(EastX, SweepScene.BlockY, 0, 4);
@@ -107,7 +107,7 @@ public class ShadowTests
     [Fact]
     public void RemovingAnObject_TakesItsShadowsOutOfTheCells()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         // On the corner of four cells (x = y = 96 is a cell corner): its sphere overlaps all four.
         PhysicsObj c = ObjectScene.Creature(world, 1, ObjectScene.At(96.2f, 96.2f));
         Assert.Equal(4, CellsListing(sweep, c).Count);

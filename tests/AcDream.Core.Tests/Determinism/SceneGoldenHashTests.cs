@@ -54,7 +54,7 @@ public class SceneGoldenHashTests
     }
 
     private static PhysicsWorld World(WorldCells cells, double start, bool visitEveryObject = false) =>
-        new(start) { VisitEveryObject = visitEveryObject, Transition = new RetailTransition(cells) };
+        new(start) { VisitEveryObject = visitEveryObject, Sweep = new RetailSweep(cells) };
 
     private static Position At(TerrainWorld terrain, float x, float y, float lift = 0f, float heading = 0f) =>
         SyntheticTerrain.OnGround(terrain, SweepScene.CellId(Bx, By, (int)(x / 24f), (int)(y / 24f)), x, y, heading, lift);

@@ -70,7 +70,7 @@ public class ReportClosedFormsTests
         // (0.949999988): λ = -ln(0.050000012) = 2.995732, k = e^(-λ/16) = 0.8292503, k^16 = 0.0500000:
         // x = 10 * 0.0625 * 0.8292503 * 0.95 / 0.1707497 = 2.883562; closed form 10 * 0.95 / 2.995732 = 3.171178;
         // error 0.287616 m (the discrete sum lags: each step moves at the end-of-step speed).
-        var world = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        var world = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(2f, 10f, 0f));
         obj.SetVelocity(new Vector3(10f, 0f, 0f));
         for (int n = 1; n <= 16; n++)

@@ -32,11 +32,11 @@ public class CollisionResponseTests
         }
     }
 
-    private static (RetailTransition Sweep, PhysicsObj Obj) Scene()
+    private static (RetailSweep Sweep, PhysicsObj Obj) Scene()
     {
         var world = new PhysicsWorld(0.0);
-        var sweep = new RetailTransition(new NoCells());
-        world.Transition = sweep;
+        var sweep = new RetailSweep(new NoCells());
+        world.Sweep = sweep;
         return (sweep, world.CreateObject(1));
     }
 
@@ -133,7 +133,7 @@ public class CollisionResponseTests
     {
         TerrainWorld terrain = SweepScene.Terrain();
         SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 20);
-        PhysicsWorld world = SweepScene.Physics(terrain, out RetailTransition sweep);
+        PhysicsWorld world = SweepScene.Physics(terrain, out RetailSweep sweep);
         var recorder = new Recorder();
         sweep.CollisionListener = recorder;
         PhysicsObj obj = SweepScene.Walker(world, new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 4), new Vector3(100f, 100f, 20f)));

@@ -17,7 +17,7 @@ public class FindObjCollisionsRulesTests
     // A sweep of `mover` against `obstacle` alone, the mover's first sphere overlapping it: the mover is placed 0.5 m from
     // the obstacle's centre (radsum 0.9998) and the check position is that overlap (a transition at rest, insert_type
     // TRANSITION, no step down).
-    private static (TransitionState State, Transition T) Hit(RetailTransition sweep, PhysicsObj mover, PhysicsObj obstacle,
+    private static (TransitionState State, Transition T) Hit(RetailSweep sweep, PhysicsObj mover, PhysicsObj obstacle,
         ObjectInfoState state)
     {
         Transition t = sweep.Pool.Make()!;
@@ -44,7 +44,7 @@ public class FindObjCollisionsRulesTests
     [Fact]
     public void EtherealIgnoringCollisions_IsSkippedEntirely()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         PhysicsObj mover = Ball(world, 1, 50f);
         PhysicsObj o = Ball(world, 2, 100f, PhysicsState.Ethereal | PhysicsState.IgnoreCollisions);
         var (state, t) = Hit(sweep, mover, o, ObjectInfoState.None);
@@ -55,7 +55,7 @@ public class FindObjCollisionsRulesTests
     [Fact]
     public void SolidObject_IsRecordedAsTheLastCollidedObject_StaticOneAsTheEnvironment()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         PhysicsObj mover = Ball(world, 1, 50f);
         PhysicsObj solid = Ball(world, 2, 100f);
         PhysicsObj rock = Ball(world, 3, 110f, PhysicsState.Static);
@@ -84,7 +84,7 @@ public class FindObjCollisionsRulesTests
     [Fact]
     public void IgnoreCreatures_PassesCreaturesAndMissiles_NotPlainObjects()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         PhysicsObj mover = Ball(world, 1, 50f);
         PhysicsObj creature = Ball(world, 2, 100f, weenie: WeenieTraits.Creature);
         PhysicsObj missile = Ball(world, 3, 110f);
@@ -102,7 +102,7 @@ public class FindObjCollisionsRulesTests
     [Fact]
     public void Viewer_PassesCreatures()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         PhysicsObj mover = Ball(world, 1, 50f);
         PhysicsObj creature = Ball(world, 2, 100f, weenie: WeenieTraits.Creature);
         Assert.Equal(TransitionState.Ok, Hit(sweep, mover, creature, ObjectInfoState.IsViewer).State);
@@ -112,7 +112,7 @@ public class FindObjCollisionsRulesTests
     [Fact]
     public void Players_PassUnlessImpenetrableOrBothPKOrBothPKLite()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         PhysicsObj mover = Ball(world, 1, 50f);
         PhysicsObj player = Ball(world, 2, 100f, weenie: WeenieTraits.Player);
         PhysicsObj pk = Ball(world, 3, 110f, weenie: new WeenieTraits { IsCreature = true, IsPlayer = true, IsPK = true });
@@ -134,7 +134,7 @@ public class FindObjCollisionsRulesTests
     [Fact]
     public void MissileIgnore_TruthTable()
     {
-        PhysicsWorld world = ObjectScene.Flat(out RetailTransition sweep);
+        PhysicsWorld world = ObjectScene.Flat(out RetailSweep sweep);
         PhysicsObj missile = Ball(world, 1, 50f, PhysicsState.Missile);
         PhysicsObj plain = Ball(world, 2, 60f);
         PhysicsObj otherMissile = Ball(world, 3, 70f, PhysicsState.Missile);

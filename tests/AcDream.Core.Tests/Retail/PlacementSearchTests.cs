@@ -20,9 +20,9 @@ public class PlacementSearchTests
 
         public override bool PointInCell(Vector3 point) => true;
 
-        public override TransitionState FindEnvCollisions(Transition transition) => TransitionState.Ok;
+        internal override TransitionState FindEnvCollisions(Transition transition) => TransitionState.Ok;
 
-        public override TransitionState FindCollisions(Transition transition)
+        internal override TransitionState FindCollisions(Transition transition)
         {
             if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
             {
@@ -34,7 +34,7 @@ public class PlacementSearchTests
             return dx * dx + dy * dy < 0.81 || c.Y > 35.5 ? TransitionState.Collided : TransitionState.Ok;
         }
 
-        public override void FindTransitCells(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
+        internal override void FindTransitCells(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
         {
         }
     }

@@ -20,7 +20,7 @@ public class StepDownTests
     {
         TerrainWorld terrain = SweepScene.Terrain();
         SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 20);
-        PhysicsWorld world = SweepScene.Physics(terrain, out RetailTransition sweep);
+        PhysicsWorld world = SweepScene.Physics(terrain, out RetailSweep sweep);
         PhysicsObj obj = world.CreateObject(1);
         obj.PartArray = new SimplePartArray(1, 0) { StepUpHeight = 0.6f, StepDownHeight = 0.6f };
         Transition t = sweep.Pool.Make()!;

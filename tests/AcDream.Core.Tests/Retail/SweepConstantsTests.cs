@@ -23,7 +23,7 @@ public class SweepConstantsTests
         Assert.Equal(0x3E000000, BitConverter.SingleToInt32Bits(Transition.PlacementSmallRadius)); // 0.125
         Assert.Equal(0x3EF5C28F, BitConverter.SingleToInt32Bits(Transition.PlacementMinRadius)); // 0.47999999
         Assert.Equal(0x40490FF9, BitConverter.SingleToInt32Bits(Transition.PlacementPi)); // 3.1415999
-        Assert.Equal(0x3D4CCCCD, BitConverter.SingleToInt32Bits(RetailTransition.PlacementTolerance)); // 0.050000001
+        Assert.Equal(0x3D4CCCCD, BitConverter.SingleToInt32Bits(RetailSweep.PlacementTolerance)); // 0.050000001
     }
 
     [Fact]

@@ -17,7 +17,7 @@ public class TransitionPoolTests
     {
         TerrainWorld terrain = SweepScene.Terrain();
         SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 20);
-        PhysicsWorld world = SweepScene.Physics(terrain, out RetailTransition sweep);
+        PhysicsWorld world = SweepScene.Physics(terrain, out RetailSweep sweep);
         PhysicsObj obj = SweepScene.Walker(world, new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 4), new Vector3(100f, 100f, 20f)));
         SweepScene.SetWalk(obj, new Vector3(0f, 3f, 0f));
 

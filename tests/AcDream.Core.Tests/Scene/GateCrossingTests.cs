@@ -29,7 +29,7 @@ public class GateCrossingTests
     /// </summary>
     private static void RunCrossingScene(PhysicsWorld w, Action<int, PhysicsWorld, ulong> afterTick, int ticks = 480)
     {
-        w.Transition = new FlatGroundTransition();
+        w.Sweep = new FlatGroundSweep();
         var probe = new MidTickProbe();
         w.StepObserver = probe;
         w.PlayerListener = probe;
@@ -188,7 +188,7 @@ public class GateCrossingTests
         // retail's own arithmetic must decide. Bit-identical to the retail walk.
         static void Run(PhysicsWorld w, Action<int, PhysicsWorld> afterTick)
         {
-            w.Transition = new FlatGroundTransition();
+            w.Sweep = new FlatGroundSweep();
             PhysicsObj player = SceneTestContext.Add(w, 500u, SceneTestContext.At(96f, 96f));
             player.SetState(player.State & ~PhysicsState.Gravity);
             player.CalcAcceleration();
@@ -227,7 +227,7 @@ public class GateCrossingTests
         // once from a step of another object. Objects visited later in that tick measure against the new player, as retail's do.
         static void Run(PhysicsWorld w, Action<int, PhysicsWorld> afterTick)
         {
-            w.Transition = new FlatGroundTransition();
+            w.Sweep = new FlatGroundSweep();
             PhysicsObj a = SceneTestContext.Add(w, 500u, SceneTestContext.At(96f, 96f));
             PhysicsObj b = SceneTestContext.Add(w, 20u, SceneTestContext.At(150f, 40f));
             PhysicsObj stepper = SceneTestContext.Add(w, 300u, SceneTestContext.At(100f, 100f));
@@ -344,7 +344,7 @@ public class GateCrossingTests
         // Objects more than the band's half-width (GateQueue.BandHalfWidth, 12 m) from the 96 m boundary are in neither band:
         // a player walking a 2 m square (within 4 m of where it started) never re-measures them, however long it walks; a
         // straight walk of 80 m rebuilds the bands from every slot, which does.
-        var w = new PhysicsWorld(50.0) { Transition = new FlatGroundTransition() };
+        var w = new PhysicsWorld(50.0) { Sweep = new FlatGroundSweep() };
         PhysicsObj player = SceneTestContext.Add(w, 1u, SceneTestContext.At(96f, 96f));
         player.SetState(player.State & ~PhysicsState.Gravity);
         player.CalcAcceleration();
@@ -403,7 +403,7 @@ public class GateCrossingTests
 
         public ChurnScene()
         {
-            World = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+            World = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
             _player = SceneTestContext.Add(World, 1u, SceneTestContext.At(96f, 96f));
             for (int k = 0; k < Items; k++)
             {

@@ -25,7 +25,7 @@ public class SceneSweepEquivalenceTests
         SweepScene.AddBlock(terrain, 0x20, 0x20, (x, y) => x);
         SweepScene.AddBlock(terrain, 0x21, 0x20, (x, y) => 8);
         var world = new PhysicsWorld(0.0) { VisitEveryObject = visitEveryObject };
-        world.Transition = new RetailTransition(terrain);
+        world.Sweep = new RetailSweep(terrain);
         walkers = new PhysicsObj[4];
         for (int i = 0; i < walkers.Length; i++)
         {

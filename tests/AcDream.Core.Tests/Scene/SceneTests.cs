@@ -78,8 +78,8 @@ public class SceneTests
     {
         // Two identical objects in two worlds; one world visits everything. After the item has rested for a while it is
         // dormant in the scene; a SetVelocity wakes it and its motion matches the full world bit for bit.
-        var full = new PhysicsWorld(0.0) { VisitEveryObject = true, Transition = new FlatGroundTransition() };
-        var scene = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        var full = new PhysicsWorld(0.0) { VisitEveryObject = true, Sweep = new FlatGroundSweep() };
+        var scene = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         PhysicsObj pf = SceneTestContext.Add(full, 1, SceneTestContext.At(50f, 50f));
         PhysicsObj ps = SceneTestContext.Add(scene, 1, SceneTestContext.At(50f, 50f));
         full.Player = pf;
@@ -117,7 +117,7 @@ public class SceneTests
     public void StationaryObjectWithMovementManager_NeverSleeps()
     {
         // Retail: an object with a movement manager does not deactivate itself; the scene keeps visiting it.
-        var scene = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        var scene = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         PhysicsObj o = SceneTestContext.Add(scene, 5, SceneTestContext.At(60f, 50f));
         o.GetMinterp();
         double t = 0;
@@ -135,7 +135,7 @@ public class SceneTests
     public void SceneWithoutCollision_NeverCallsTheSweep()
     {
         var counting = new CountingTransition();
-        var noCollision = new PhysicsWorld(0.0) { Effects = SceneEffects.All & ~SceneEffects.Collision, Transition = counting };
+        var noCollision = new PhysicsWorld(0.0) { Effects = SceneEffects.All & ~SceneEffects.Collision, Sweep = counting };
         PhysicsObj o = SceneTestContext.Add(noCollision, 5, SceneTestContext.At(60f, 50f));
         int placementCalls = counting.Sweeps;
         o.SetVelocity(new Vector3(0f, 0f, 5f));
@@ -150,7 +150,7 @@ public class SceneTests
         // It still moved: free flight under gravity, z = 5 t - 4.9 t² > 0 after one second... (not swept, not blocked).
         Assert.NotEqual(0f, o.Position.Frame.Origin.Z);
 
-        var withCollision = new PhysicsWorld(0.0) { Transition = counting };
+        var withCollision = new PhysicsWorld(0.0) { Sweep = counting };
         PhysicsObj p = SceneTestContext.Add(withCollision, 5, SceneTestContext.At(60f, 50f));
         p.SetVelocity(new Vector3(0f, 0f, 5f));
         withCollision.Tick(1.0 / 30.0);
@@ -185,8 +185,8 @@ public class SceneTests
     [Fact]
     public void TwoScenes_TickIndependently()
     {
-        var a = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
-        var b = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        var a = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
+        var b = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         PhysicsObj oa = SceneTestContext.Add(a, 5, SceneTestContext.At(60f, 50f));
         PhysicsObj ob = SceneTestContext.Add(b, 5, SceneTestContext.At(60f, 50f));
         oa.SetVelocity(new Vector3(2f, 0f, 0f));
@@ -205,8 +205,8 @@ public class SceneTests
     [Fact]
     public void RemovingAndRecreatingAnObject_GivesTheSameTick()
     {
-        var a = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
-        var b = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        var a = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
+        var b = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         foreach (PhysicsWorld w in new[] { a, b })
         {
             for (uint id = 1; id <= 20; id++)
@@ -238,16 +238,16 @@ public class SceneTests
         }
     }
 
-    private sealed class CountingTransition : TransitionSeam
+    private sealed class CountingTransition : CollisionSweep
     {
-        private readonly FlatGroundTransition _inner = new();
+        private readonly FlatGroundSweep _inner = new();
 
         public int Sweeps { get; private set; }
 
-        public override bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
+        public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
         {
             Sweeps++;
-            return _inner.FindTransitionalPosition(obj, oldPos, newPos, adminMove, ref result);
+            return _inner.SweepObject(obj, oldPos, newPos, adminMove, ref result);
         }
 
         public override SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags) => _inner.SetPosition(obj, pos, flags);
@@ -262,13 +262,13 @@ public class SceneIsolationTests
     {
         TerrainWorld terrain = SweepScene.Terrain();
         SweepScene.AddBlock(terrain, 0x20, 0x20, (x, y) => 0);
-        var a = new PhysicsWorld(0.0) { Transition = new RetailTransition(terrain) };
+        var a = new PhysicsWorld(0.0) { Sweep = new RetailSweep(terrain) };
         var b = new PhysicsWorld(0.0);
-        TransitionSeam before = b.Transition;
-        Assert.Throws<System.ArgumentException>(() => b.Transition = new RetailTransition(terrain));
-        Assert.Same(before, b.Transition);
+        CollisionSweep before = b.Sweep;
+        Assert.Throws<System.ArgumentException>(() => b.Sweep = new RetailSweep(terrain));
+        Assert.Same(before, b.Sweep);
         // The same world may take a new sweep over its own terrain.
-        a.Transition = new RetailTransition(terrain);
+        a.Sweep = new RetailSweep(terrain);
     }
 }
 

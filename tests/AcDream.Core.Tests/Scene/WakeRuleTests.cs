@@ -150,25 +150,16 @@ public class WakeRuleTests
         ["set_LastMoveWasAutonomous(Boolean)"] = f => f.Obj.LastMoveWasAutonomous = true,
         // The network timestamps (update_times): read only by the network handlers, never by update_object.
         ["NewerEvent(PhysicsTimeStamp, UInt16)"] = f => f.Obj.NewerEvent(PhysicsTimeStamp.Position, 1),
-        // The cells' shadow lists: read only by sweeps (other objects' sweeps find the object through them and read its
-        // fields as they are, dormant or not; its own ethereal check runs only in an active step with CHECK_ETHEREAL set, which
-        // keeps an object awake).
-        ["AddShadowsToCells(CellArray, ObjCell)"] = f => f.Obj.AddShadowsToCells(new CellArray(), null),
-        ["RemoveShadowsFromCells()"] = f => f.Obj.RemoveShadowsFromCells(),
     };
 
     /// <summary>Public methods that change nothing of the object (the sweep queries write only the transition they are given).</summary>
     private static readonly HashSet<string> Queries =
     [
         "CheckCollision(PhysicsObj)",
-        "CheckContact(Boolean)",
         "DetermineQuadrant(Position, Single, Position)",
-        "EtherealCheckForCollisions()",
-        "FindObjCollisions(Transition)",
         "GetAutonomyBlipDistance()",
         "GetHeight()",
         "GetMaxConstraintDistance()",
-        "GetObjectInfo(Transition, Boolean)",
         "GetRadius()",
         "GetStartConstraintDistance()",
         "GetStepDownHeight()",
@@ -199,7 +190,7 @@ public class WakeRuleTests
     /// <summary>A world with no player, and two resting objects put to sleep.</summary>
     private static Fixture MakeDormant(Action<Fixture>? prepare)
     {
-        var world = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        var world = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         var f = new Fixture
         {
             World = world,
@@ -265,8 +256,8 @@ public class WakeRuleTests
     {
         // Resting items near a player get the no-wake setters while dormant, then are kicked (friction, translucency floor
         // and elasticity are read once they move): every tick matches a world that visits every object.
-        var full = new PhysicsWorld(0.0) { VisitEveryObject = true, Transition = new FlatGroundTransition() };
-        var scene = new PhysicsWorld(0.0) { Transition = new FlatGroundTransition() };
+        var full = new PhysicsWorld(0.0) { VisitEveryObject = true, Sweep = new FlatGroundSweep() };
+        var scene = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         PhysicsWorld[] worlds = [full, scene];
         foreach (PhysicsWorld w in worlds)
         {

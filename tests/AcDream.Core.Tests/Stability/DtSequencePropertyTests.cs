@@ -135,7 +135,7 @@ public class DtSequencePropertyTests
         {
             TerrainWorld terrain = SweepScene.Terrain();
             SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (vx, _) => 10 + 20 * vx);
-            var world = new PhysicsWorld(seq.Origin) { Transition = new RetailTransition(terrain) };
+            var world = new PhysicsWorld(seq.Origin) { Sweep = new RetailSweep(terrain) };
             var p = new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 3, 4), new Vector3(84f, 108f, 0f));
             p.Frame.Origin = new Vector3(84f, 108f, SweepScene.Ground(terrain, p));
             PhysicsObj obj = SweepScene.Walker(world, p);
@@ -167,7 +167,7 @@ public class DtSequencePropertyTests
             foreach (bool awake in new[] { true, false })
             {
                 PhysicsWorld world = TickTestContext.World(seq.Origin);
-                world.Transition = new FlatGroundTransition();
+                world.Sweep = new FlatGroundSweep();
                 PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(12f, 12f, 0f));
                 if (awake)
                 {

@@ -18,7 +18,7 @@ public class FrictionDecayReachesExactZeroTests
     private static PhysicsObj Slider(out PhysicsWorld world, Vector3 velocity, float friction = PhysicsGlobals.DefaultFriction)
     {
         world = TickTestContext.World(0.0);
-        world.Transition = new FlatGroundTransition();
+        world.Sweep = new FlatGroundSweep();
         PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(12f, 12f, 0f));
         Assert.True((obj.TransientState & TransientState.OnWalkable) != 0);
         obj.Friction = friction;

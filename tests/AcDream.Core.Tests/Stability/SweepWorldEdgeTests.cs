@@ -58,12 +58,12 @@ public class SweepBadInputTests
     {
         TerrainWorld terrain = SweepScene.Terrain();
         SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 20);
-        PhysicsWorld world = SweepScene.Physics(terrain, out RetailTransition sweep);
+        PhysicsWorld world = SweepScene.Physics(terrain, out RetailSweep sweep);
         PhysicsObj obj = SweepScene.Walker(world, new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 4), new Vector3(100f, 100f, 20f)));
         Position bad = obj.Position;
         bad.Frame.Origin = new Vector3(float.NaN, 100f, 20f);
         Position before = obj.Position;
-        Assert.Throws<System.ArgumentException>(() => sweep.Transition(obj, obj.Position, bad, false));
+        Assert.Throws<System.ArgumentException>(() => sweep.RunTransition(obj, obj.Position, bad, false));
         Assert.Equal(0, sweep.Pool.Level);
         Assert.Equal(before, obj.Position);
     }

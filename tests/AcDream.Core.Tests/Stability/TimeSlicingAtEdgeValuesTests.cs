@@ -232,7 +232,7 @@ public class TimeSlicingAtEdgeValuesTests
         TerrainWorld terrain = SweepScene.Terrain();
         SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (vx, vy) => 20 + 2 * vx + vy);
         var world = new PhysicsWorld(origin);
-        world.Transition = new RetailTransition(terrain);
+        world.Sweep = new RetailSweep(terrain);
         var steps = new StepRecorder();
         world.StepObserver = steps;
         var p = new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 2, 2), Frame.FromHeading(new Vector3(60f, 60f, 0f), 30f));

@@ -35,7 +35,7 @@ internal static class BspScene
     public static PhysicsWorld Physics(WorldCells cells)
     {
         var world = new PhysicsWorld(0.0);
-        world.Transition = new RetailTransition(cells);
+        world.Sweep = new RetailSweep(cells);
         return world;
     }
 

@@ -23,7 +23,7 @@ internal static class ObjectScene
     public const float GroundZ = 20f;
 
     /// <summary>A flat world (every vertex at index 20 of the one-metre table: the plane z = 20), one or two landblocks.</summary>
-    public static PhysicsWorld Flat(out RetailTransition sweep, bool twoBlocks = false)
+    public static PhysicsWorld Flat(out RetailSweep sweep, bool twoBlocks = false)
     {
         TerrainWorld terrain = SweepScene.Terrain();
         SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 20);

@@ -66,7 +66,7 @@ internal static class SceneTestContext
     /// </summary>
     public static void RunMixedScene(PhysicsWorld w, Action<int, PhysicsWorld> afterTick, int ticks = 260, bool descendingCreation = false)
     {
-        w.Transition = new FlatGroundTransition();
+        w.Sweep = new FlatGroundSweep();
         // Items (ids 100..), statics (ids 1000..), movers (ids 2000..). Creation order may be reversed: ids decide the order.
         var specs = new (uint Id, Position P, int Kind)[0];
         var list = new System.Collections.Generic.List<(uint, Position, int)>();

@@ -33,11 +33,11 @@ internal static class SweepScene
     public static TerrainWorld Terrain() => new(MetreTable());
 
     /// <summary>A physics world sweeping through <paramref name="terrain"/> with the retail sweep.</summary>
-    public static PhysicsWorld Physics(TerrainWorld terrain, out RetailTransition sweep)
+    public static PhysicsWorld Physics(TerrainWorld terrain, out RetailSweep sweep)
     {
         var world = new PhysicsWorld(0.0);
-        sweep = new RetailTransition(terrain);
-        world.Transition = sweep;
+        sweep = new RetailSweep(terrain);
+        world.Sweep = sweep;
         return world;
     }
 

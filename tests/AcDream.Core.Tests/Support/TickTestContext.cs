@@ -50,9 +50,9 @@ internal sealed class StepRecorder : IStepObserver
 }
 
 /// <summary>A sweep that always succeeds at the requested position on a horizontal walkable floor (normal +Z).</summary>
-internal sealed class FlatGroundTransition : TransitionSeam
+internal sealed class FlatGroundSweep : CollisionSweep
 {
-    public override bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
+    public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
     {
         result = Ground(newPos, obj.CellId);
         return true;
@@ -77,9 +77,9 @@ internal sealed class FlatGroundTransition : TransitionSeam
 }
 
 /// <summary>A sweep that always fails (blocked everywhere).</summary>
-internal sealed class BlockedTransition : TransitionSeam
+internal sealed class BlockedTransition : CollisionSweep
 {
-    public override bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result) => false;
+    public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result) => false;
 
     public override SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags)
     {

@@ -22,7 +22,7 @@ internal sealed class FrictionScene : WorldSim
     private double _max;
 
     public FrictionScene(PhysicsProfile profile, Pacing pacing, double seconds)
-        : base(new PhysicsWorld(0.0, profile) { Transition = new FlatGroundTransition() }, pacing, seconds)
+        : base(new PhysicsWorld(0.0, profile) { Sweep = new ReplayGroundSweep() }, pacing, seconds)
     {
         _obj = SceneKit.Ball(World, new Vector3(X0, 12f, 0f));
         _obj.SetVelocity(new Vector3(10f, 0f, 0f));

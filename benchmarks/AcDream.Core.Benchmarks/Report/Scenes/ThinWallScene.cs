@@ -33,7 +33,7 @@ internal sealed class ThinWallScene : WorldSim
     private double _maxPenetration;
 
     public ThinWallScene(PhysicsProfile profile, Pacing pacing, double seconds)
-        : base(new PhysicsWorld(0.0, profile) { Transition = new RetailTransition(Cells()) }, pacing, seconds)
+        : base(new PhysicsWorld(0.0, profile) { Sweep = new RetailSweep(Cells()) }, pacing, seconds)
     {
         PhysicsState missile = ((PhysicsState)PhysicsGlobals.DefaultState | PhysicsState.Missile) & ~PhysicsState.Gravity;
         float[] speeds = [10f, 20f, 35f, 50f];

@@ -38,7 +38,7 @@ public sealed class BuildingObj
     /// collision.
     /// </summary>
     // retail: CBuildingObj::find_building_collisions (acclient.c:719115)
-    public TransitionState FindBuildingCollisions(Transition transition)
+    internal TransitionState FindBuildingCollisions(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         transition.SpherePath.BldgCheck = true;
@@ -54,7 +54,7 @@ public sealed class BuildingObj
 
     /// <summary>Adds the indoor cells behind the doors that the spheres reach.</summary>
     // retail: CBuildingObj::find_building_transit_cells (acclient.c:719067)
-    public void FindBuildingTransitCells(ICellSource cells, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
+    internal void FindBuildingTransitCells(ICellSource cells, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
     {
         ArgumentNullException.ThrowIfNull(cells);
         for (int i = 0; i < _portals.Length; i++)

@@ -10,7 +10,7 @@ namespace AcDream.Core.Physics.Cells;
 /// Builds the list of cells a sphere path overlaps. Retail: <c>CObjCell::find_cell_list</c> (acclient.c:346960 and its
 /// overloads 347315, 347321).
 /// </summary>
-public static class CellList
+internal static class CellList
 {
     /// <summary>
     /// Fills <paramref name="cellArray"/> with the cells the path's check spheres overlap and, when

@@ -9,7 +9,7 @@ public sealed partial class EnvCell
 {
     /// <summary>The cell's walls and floors, then the objects in it (object shadows: a later part of the port).</summary>
     // retail: CEnvCell::find_collisions (acclient.c:347809)
-    public override TransitionState FindCollisions(Transition transition)
+    internal override TransitionState FindCollisions(Transition transition)
     {
         TransitionState ts = FindEnvCollisions(transition);
         if (ts == TransitionState.Ok)
@@ -25,7 +25,7 @@ public sealed partial class EnvCell
     /// the sweep's BSP collision otherwise. A blocked airborne object records an environment collision.
     /// </summary>
     // retail: CEnvCell::find_env_collisions (acclient.c:347822)
-    public override TransitionState FindEnvCollisions(Transition transition)
+    internal override TransitionState FindEnvCollisions(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         TransitionState ts = CheckEntryRestrictions(transition);

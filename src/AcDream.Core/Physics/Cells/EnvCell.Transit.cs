@@ -19,7 +19,7 @@ public sealed partial class EnvCell
     /// <remarks>The sphere centres are in <paramref name="p"/>'s landblock, which retail assumes is the cell's own (no
     /// block offset is applied, as in retail).</remarks>
     // retail: CEnvCell::find_transit_cells (acclient.c:348249)
-    public override void FindTransitCells(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
+    internal override void FindTransitCells(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
     {
         ArgumentNullException.ThrowIfNull(cells);
         ArgumentNullException.ThrowIfNull(cellArray);
@@ -91,7 +91,7 @@ public sealed partial class EnvCell
     /// interior cell and the cell joins the list.
     /// </summary>
     // retail: CEnvCell::check_building_transit (acclient.c:348109)
-    public void CheckBuildingTransit(int portalId, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
+    internal void CheckBuildingTransit(int portalId, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
     {
         ArgumentNullException.ThrowIfNull(cellArray);
         if (portalId < 0)

@@ -15,7 +15,7 @@ public sealed partial class LandCell : ObjCell
     /// The terrain, then the building (<see cref="Building"/>), then objects against the check spheres.
     /// </summary>
     // retail: CLandCell::find_collisions (acclient.c:354886)
-    public override TransitionState FindCollisions(Transition transition)
+    internal override TransitionState FindCollisions(Transition transition)
     {
         TransitionState ts = FindEnvCollisions(transition);
         if (ts == TransitionState.Ok)
@@ -37,7 +37,7 @@ public sealed partial class LandCell : ObjCell
     /// ground (sunk by the water depth) and records the contact plane.
     /// </summary>
     // retail: CLandCell::find_env_collisions (acclient.c:354991)
-    public override TransitionState FindEnvCollisions(Transition transition)
+    internal override TransitionState FindEnvCollisions(Transition transition)
     {
         TransitionState ts = CheckEntryRestrictions(transition);
         if (ts != TransitionState.Ok)
@@ -72,7 +72,7 @@ public sealed partial class LandCell : ObjCell
 
     /// <summary>The outdoor cells around the spheres (added once per list) and the indoor cells behind the building's doors.</summary>
     // retail: CLandCell::find_transit_cells (acclient.c:355422)
-    public override void FindTransitCells(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
+    internal override void FindTransitCells(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path)
     {
         CellList.AddAllOutsideCells(cells, p, spheres, cellArray);
 

@@ -15,7 +15,7 @@ public sealed partial class LandCell
     /// The most cells one sphere can add: its own cell and its eight neighbours (a radius above 12 m can reach both sides).
     /// Size a buffer as <c>count + MaxCellsPerSphere * sphereCount</c>.
     /// </summary>
-    public const int MaxCellsPerSphere = 9;
+    internal const int MaxCellsPerSphere = 9;
 
     /// <summary>
     /// Appends the outdoor cell at global cell coordinates (<paramref name="x"/>, <paramref name="y"/>) to
@@ -23,7 +23,7 @@ public sealed partial class LandCell
     /// </summary>
     /// <exception cref="ArgumentException">The cell is new and the buffer is full (nothing is written).</exception>
     // retail: CLandCell::add_outside_cell (acclient.c:354974) with CELLARRAY::add_cell (acclient.c:718895)
-    public static void AddOutsideCell(int x, int y, Span<uint> cellIds, ref int count)
+    internal static void AddOutsideCell(int x, int y, Span<uint> cellIds, ref int count)
     {
         if (!LandDefs.InBounds(x, y))
         {
@@ -38,7 +38,7 @@ public sealed partial class LandCell
     /// </summary>
     /// <exception cref="ArgumentException">The id is new and the buffer is full (nothing is written).</exception>
     // retail: CELLARRAY::add_cell (acclient.c:718895)
-    public static void AddCellId(uint cellId, Span<uint> cellIds, ref int count)
+    internal static void AddCellId(uint cellId, Span<uint> cellIds, ref int count)
     {
         for (int i = 0; i < count; i++)
         {
@@ -113,7 +113,7 @@ public sealed partial class LandCell
     /// <exception cref="ArgumentException">A NaN or infinite centre, a negative or non-finite radius, or fewer than
     /// <see cref="MaxCellsPerSphere"/> free slots in the buffer (nothing is written).</exception>
     // retail: CLandCell::add_all_outside_cells (acclient.c:355345), the body of its sphere loop
-    public static bool AddOutsideCellsForSphere(uint cellId, Vector3 center, float radius, Span<uint> cellIds, ref int count)
+    internal static bool AddOutsideCellsForSphere(uint cellId, Vector3 center, float radius, Span<uint> cellIds, ref int count)
     {
         ValidateSphere(center, radius);
         if (cellIds.Length - count < MaxCellsPerSphere)
@@ -133,7 +133,7 @@ public sealed partial class LandCell
     /// <exception cref="ArgumentException">Mismatched span lengths, a NaN or infinite centre, a negative or non-finite
     /// radius, or a buffer with fewer than <see cref="MaxCellsPerSphere"/> free slots per sphere (nothing is written).</exception>
     // retail: CLandCell::add_all_outside_cells (acclient.c:355345)
-    public static int AddAllOutsideCells(in Position p, ReadOnlySpan<Vector3> centers, ReadOnlySpan<float> radii, Span<uint> cellIds, int count)
+    internal static int AddAllOutsideCells(in Position p, ReadOnlySpan<Vector3> centers, ReadOnlySpan<float> radii, Span<uint> cellIds, int count)
     {
         if (centers.Length != radii.Length)
         {

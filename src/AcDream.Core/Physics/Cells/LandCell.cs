@@ -153,6 +153,6 @@ public sealed partial class LandCell
 
     /// <summary>The building's shell against the check spheres; OK without a building.</summary>
     // retail: CSortCell::find_collisions (acclient.c:356106)
-    public TransitionState FindBuildingCollisions(Transition transition) =>
+    internal TransitionState FindBuildingCollisions(Transition transition) =>
         Building is null ? TransitionState.Ok : Building.FindBuildingCollisions(transition);
 }

@@ -11,13 +11,13 @@ public abstract partial class ObjCell
     private ShadowObj[] _shadowObjects = new ShadowObj[ShadowListGrowth];
 
     /// <summary>Growth step of the shadow list. Retail grows by 5 (<c>add_shadow_object</c>, acclient.c:346804).</summary>
-    public const int ShadowListGrowth = 5;
+    internal const int ShadowListGrowth = 5;
 
     /// <summary>Number of shadows in the cell. Retail: <c>num_shadow_objects</c>.</summary>
-    public int NumShadowObjects { get; private set; }
+    internal int NumShadowObjects { get; private set; }
 
     /// <summary>The shadows in the cell, <see cref="NumShadowObjects"/> long, in retail's list order.</summary>
-    public ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
+    internal ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
 
     /// <summary>
     /// Makes room for <paramref name="capacity"/> shadows without growing later (for a client that knows how crowded a cell
@@ -38,7 +38,7 @@ public abstract partial class ObjCell
     /// <remarks>The list grows by <see cref="ShadowListGrowth"/> when full and never shrinks (retail shrinks a list with
     /// more than 10 spare slots; keeping the capacity keeps the tick allocation-free).</remarks>
     // retail: CObjCell::add_shadow_object (acclient.c:346804)
-    public void AddShadowObject(ShadowObj shadow)
+    internal void AddShadowObject(ShadowObj shadow)
     {
         ArgumentNullException.ThrowIfNull(shadow);
         if (NumShadowObjects >= _shadowObjects.Length)
@@ -52,7 +52,7 @@ public abstract partial class ObjCell
 
     /// <summary>Removes <paramref name="shadow"/> (the last shadow takes its slot) and clears its cell.</summary>
     // retail: CObjCell::remove_shadow_object (acclient.c:346823)
-    public void RemoveShadowObject(ShadowObj shadow)
+    internal void RemoveShadowObject(ShadowObj shadow)
     {
         ArgumentNullException.ThrowIfNull(shadow);
         for (int i = 0; i < NumShadowObjects; i++)
@@ -73,7 +73,7 @@ public abstract partial class ObjCell
     /// one answers other than OK. An initial placement tests no objects.
     /// </summary>
     // retail: CObjCell::find_obj_collisions (acclient.c:347141)
-    protected TransitionState FindShadowObjCollisions(Transition transition)
+    private protected TransitionState FindShadowObjCollisions(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         TransitionState result = TransitionState.Ok;
@@ -101,7 +101,7 @@ public abstract partial class ObjCell
 
     /// <summary>True when <paramref name="obj"/>, where it stands, overlaps an object shadowed in this cell.</summary>
     // retail: CObjCell::check_collisions (acclient.c:347173)
-    public bool CheckCollisions(PhysicsObj obj)
+    internal bool CheckCollisions(PhysicsObj obj)
     {
         ArgumentNullException.ThrowIfNull(obj);
         for (int i = 0; i < NumShadowObjects; i++)

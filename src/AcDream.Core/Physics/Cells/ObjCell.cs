@@ -26,11 +26,11 @@ public abstract partial class ObjCell
     /// buildings, then objects. Returns the first result that is not OK.
     /// </summary>
     // retail: CObjCell::find_collisions (virtual; CLandCell::find_collisions acclient.c:354886)
-    public abstract TransitionState FindCollisions(Transition transition);
+    internal abstract TransitionState FindCollisions(Transition transition);
 
     /// <summary>The cell's own geometry against the check spheres (terrain for a land cell).</summary>
     // retail: CObjCell::find_env_collisions (virtual; CLandCell::find_env_collisions acclient.c:354991)
-    public abstract TransitionState FindEnvCollisions(Transition transition);
+    internal abstract TransitionState FindEnvCollisions(Transition transition);
 
     /// <summary>
     /// Adds to <paramref name="cellArray"/> the cells the spheres reach through this one (neighbouring outdoor cells,
@@ -42,19 +42,19 @@ public abstract partial class ObjCell
     /// <param name="cellArray">The list being built.</param>
     /// <param name="path">The sphere path, when the list is built for a sweep.</param>
     // retail: CObjCell::find_transit_cells (virtual; CLandCell::find_transit_cells acclient.c:355422)
-    public abstract void FindTransitCells(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path);
+    internal abstract void FindTransitCells(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray, SpherePath? path);
 
     /// <summary>
     /// Whether the moving object may enter the cell at all: never without an object; otherwise yes (retail asks the
     /// weenie about restricted cells, e.g. housing; there is no weenie in the core).
     /// </summary>
     // retail: CObjCell::check_entry_restrictions (acclient.c:347102)
-    public virtual TransitionState CheckEntryRestrictions(Transition transition) =>
+    internal virtual TransitionState CheckEntryRestrictions(Transition transition) =>
         transition.ObjectInfo.Object is null ? TransitionState.Collided : TransitionState.Ok;
 
     /// <summary>The objects whose shadows lie in the cell against the check spheres (ObjCell.Shadows.cs).</summary>
     // retail: CObjCell::find_obj_collisions (acclient.c:347141)
-    public virtual TransitionState FindObjCollisions(Transition transition) => FindShadowObjCollisions(transition);
+    internal virtual TransitionState FindObjCollisions(Transition transition) => FindShadowObjCollisions(transition);
 }
 
 /// <summary>

@@ -7,7 +7,7 @@ namespace AcDream.Core.Physics.Cells;
 /// Retail: <c>CShadowObj</c> (acclient.h, PORTAL/cphysobj/CShadowObj.c). An object owns its shadows (one per cell,
 /// reused from tick to tick); a cell only points at them.
 /// </summary>
-public sealed class ShadowObj
+internal sealed class ShadowObj
 {
     /// <summary>Creates a shadow of <paramref name="physObj"/>.</summary>
     internal ShadowObj(PhysicsObj physObj)

@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Cells;
 namespace AcDream.Core.Physics.Collision;
 
 /// <summary>One entry of a <see cref="CellArray"/>: a cell id and the cell, which is null when it is not loaded. Retail: <c>CELLINFO</c> (acclient.h:31925).</summary>
-public struct CellInfo
+internal struct CellInfo
 {
     /// <summary>The cell id.</summary>
     public uint CellId;
@@ -17,7 +17,7 @@ public struct CellInfo
 /// The cells a sphere path overlaps, in the order they were found, without duplicates. Retail: <c>CELLARRAY</c>
 /// (acclient.h:31574, PORTAL/cphysics/CCellArray.c). Owned by a pooled <see cref="Transition"/>; it grows only past its capacity.
 /// </summary>
-public sealed class CellArray
+internal sealed class CellArray
 {
     private CellInfo[] _cells = new CellInfo[InitialCapacity];
 

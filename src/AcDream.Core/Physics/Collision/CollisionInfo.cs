@@ -11,7 +11,7 @@ namespace AcDream.Core.Physics.Collision;
 /// the normal of the last collision, the objects it hit and the stationary-fall counter. Retail: <c>COLLISIONINFO</c>
 /// (acclient.h:52306). Owned by a pooled <see cref="Transition"/>; the object list grows only past its capacity.
 /// </summary>
-public sealed class CollisionInfo
+internal sealed class CollisionInfo
 {
     private PhysicsObj?[] _collideObject = new PhysicsObj?[InitialObjectCapacity];
 

@@ -3,7 +3,7 @@ namespace AcDream.Core.Physics.Collision;
 /// <summary>
 /// How the sphere path is being inserted into the world. Retail: <c>enum SPHEREPATH::InsertType</c> (acclient.h:6160).
 /// </summary>
-public enum InsertType
+internal enum InsertType
 {
     /// <summary>A sweep from a begin position to an end position (retail <c>TRANSITION_INSERT</c>).</summary>
     Transition = 0,

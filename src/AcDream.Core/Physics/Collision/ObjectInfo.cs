@@ -10,7 +10,7 @@ namespace AcDream.Core.Physics.Collision;
 /// The moving object as the sweep sees it: its state bits, scale and step heights. Retail: <c>OBJECTINFO</c>
 /// (acclient.h:52284, PORTAL/cphysics/CObjectInfo.c).
 /// </summary>
-public sealed partial class ObjectInfo
+internal sealed partial class ObjectInfo
 {
     /// <summary>The object being moved (null for a bare sweep). Retail: <c>object</c>.</summary>
     public PhysicsObj? Object;

@@ -7,7 +7,7 @@ namespace AcDream.Core.Physics.Collision;
 /// <c>OBJECTINFO::state</c> bits built by <c>CPhysicsObj::get_object_info</c> (acclient.c:319073).
 /// </summary>
 [Flags]
-public enum ObjectInfoState : uint
+internal enum ObjectInfoState : uint
 {
     /// <summary>No bits (retail <c>DEFAULT_OI</c>).</summary>
     None = 0x0,

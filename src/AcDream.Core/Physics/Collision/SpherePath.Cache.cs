@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Collision;
 
-public sealed partial class SpherePath
+internal sealed partial class SpherePath
 {
     /// <summary>Places the local spheres at <see cref="CurrPos"/> into <see cref="GlobalCurrCenter"/>.</summary>
     // retail: SPHEREPATH::cache_global_curr_center (acclient.c:313696)

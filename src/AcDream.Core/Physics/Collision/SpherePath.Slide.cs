@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Collision;
 
-public sealed partial class SpherePath
+internal sealed partial class SpherePath
 {
     /// <summary>
     /// True when the sphere, halved, still stands on the walkable polygon (or when there is none, as on terrain).

@@ -18,7 +18,7 @@ namespace AcDream.Core.Physics.Collision;
 /// respectively (retail's "global" means landblock-local). Positions are copied by value where retail kept a pointer
 /// (<see cref="BeginPos"/>, <see cref="EndPos"/>); <see cref="HasBeginPos"/> stands for a non-null begin pointer.
 /// </remarks>
-public sealed partial class SpherePath
+internal sealed partial class SpherePath
 {
     /// <summary>Most spheres a path carries. Retail: <c>init_sphere</c> clamps to 2 (acclient.c:313646).</summary>
     public const int MaxSpheres = 2;

@@ -4,7 +4,7 @@ using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Collision;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// What to do when a walker's step left the ground and no step down found any: an object without edge sliding simply

@@ -7,7 +7,7 @@ using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Collision;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Tests the check position in its cell and the cells around it, up to <paramref name="numInsertionAttempts"/> times

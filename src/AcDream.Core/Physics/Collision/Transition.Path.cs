@@ -6,7 +6,7 @@ using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Collision;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Splits the move into steps no longer than the first sphere's radius: <c>ceil(|offset| / radius)</c> steps of equal

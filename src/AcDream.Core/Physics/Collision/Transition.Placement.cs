@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Collision;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Places the object at <see cref="SpherePath.CurrPos"/>: an initial test (objects ignored), then the placement search

@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Collision;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Lowers the check position by <paramref name="stepDownHeight"/> (unless a step up already placed it) and inserts it;

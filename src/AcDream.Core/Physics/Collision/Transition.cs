@@ -20,7 +20,7 @@ namespace AcDream.Core.Physics.Collision;
 /// sweep allocates nothing. The file is split by concern: path (stepping and offset adjustment), insert (cell tests and
 /// validation), step (step up and down), edge slide, placement.
 /// </remarks>
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Step-down (and step-up) height, in metres, of an object that is not on walkable ground (and the landing allowance

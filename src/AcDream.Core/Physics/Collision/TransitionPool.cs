@@ -11,7 +11,7 @@ namespace AcDream.Core.Physics.Collision;
 /// </summary>
 /// <remarks>A transition stays readable after <see cref="Cleanup"/> until the next <see cref="Make"/> takes its slot —
 /// retail's <c>CPhysicsObj::transition</c> cleans up before its caller reads the result.</remarks>
-public sealed class TransitionPool
+internal sealed class TransitionPool
 {
     /// <summary>Number of transitions, the deepest nesting. Retail: 10 (acclient.c:312542).</summary>
     public const int Capacity = 10;

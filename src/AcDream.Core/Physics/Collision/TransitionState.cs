@@ -3,7 +3,7 @@ namespace AcDream.Core.Physics.Collision;
 /// <summary>
 /// The outcome of one collision test or insertion step of the sweep. Retail: <c>enum TransitionState</c> (acclient.h:6100).
 /// </summary>
-public enum TransitionState
+internal enum TransitionState
 {
     /// <summary>No result (retail <c>INVALID_TS = 0</c>): returned by an insertion asked to make no attempt.</summary>
     Invalid = 0,

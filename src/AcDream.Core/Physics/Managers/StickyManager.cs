@@ -221,7 +221,6 @@ public sealed class StickyManager
         TargetId = 0;
         Initialized = false;
         PhysicsObj.PositionManager?.TargetTracker?.ClearTarget(PhysicsObj);
-        // retail: CPhysicsObj::cancel_moveto (acclient.c:317420) -> MovementManager::CancelMoveTo(0x36)
-        PhysicsObj.MovementManager?.CancelMoveTo(UnstickMoveToError);
+        PhysicsObj.CancelMoveTo();
     }
 }

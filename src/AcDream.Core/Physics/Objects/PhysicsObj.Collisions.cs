@@ -16,7 +16,7 @@ public sealed partial class PhysicsObj
     /// The object's contact as seen by a sweep: false when it moves away from its contact plane faster than EPSILON.
     /// </summary>
     // retail: CPhysicsObj::check_contact (acclient.c:316535)
-    public bool CheckContact(bool contact)
+    internal bool CheckContact(bool contact)
     {
         if ((_transientState & TransientState.Contact) != 0)
         {
@@ -38,7 +38,7 @@ public sealed partial class PhysicsObj
     /// <remarks>FREE_ROTATE comes from the part array's <c>AllowsFreeHeading</c>, which the core's part array does not model
     /// (always false).</remarks>
     // retail: CPhysicsObj::get_object_info (acclient.c:319073)
-    public ObjectInfoState GetObjectInfo(Transition transition, bool adminMove)
+    internal ObjectInfoState GetObjectInfo(Transition transition, bool adminMove)
     {
         System.ArgumentNullException.ThrowIfNull(transition);
         ObjectInfoState state = ObjectInfoState.None;

@@ -149,4 +149,8 @@ public sealed partial class PhysicsObj
 
         _transientState |= TransientState.Active;
     }
+
+    /// <summary>Cancels the movement manager's move-to with the unstick error (<see cref="StickyManager.UnstickMoveToError"/>).</summary>
+    // retail: CPhysicsObj::cancel_moveto (acclient.c:317420)
+    internal void CancelMoveTo() => MovementManager?.CancelMoveTo(StickyManager.UnstickMoveToError);
 }

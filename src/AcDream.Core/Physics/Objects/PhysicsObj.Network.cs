@@ -82,6 +82,6 @@ public sealed partial class PhysicsObj
         PositionManager?.StopInterpolating();
         PositionManager?.UnConstrain();
         TargetManager?.ClearTarget();
-        World.Transition.ReportCollisionEnd(this, true);
+        World.Sweep.ReportCollisionEnd(this, true);
     }
 }

@@ -3,6 +3,7 @@ using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;
 
@@ -26,7 +27,7 @@ public sealed partial class PhysicsObj
     /// </summary>
     /// <returns>The state of the first shape that did not answer OK, or OK.</returns>
     // retail: CPhysicsObj::FindObjCollisions (acclient.c:316158)
-    public TransitionState FindObjCollisions(Transition transition)
+    internal TransitionState FindObjCollisions(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         ObjectInfo oi = transition.ObjectInfo;
@@ -171,17 +172,51 @@ public sealed partial class PhysicsObj
     public bool CheckCollision(PhysicsObj mover)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        if ((_state & PhysicsState.Static) != 0 || World.Transition is not RetailTransition retail)
+        if ((_state & PhysicsState.Static) != 0 || World.Sweep is not RetailSweep retail)
         {
             return false;
         }
 
-        return retail.CheckCollision(this, mover);
+        return CheckCollision(retail, mover);
+    }
+
+    /// <summary>
+    /// True when <paramref name="mover"/>, where it stands, overlaps this object: a placement test of the mover's shapes
+    /// against this object's spheres at rest, in a transition from <paramref name="sweep"/>'s pool. False when no
+    /// transition is free.
+    /// </summary>
+    // retail: CPhysicsObj::check_collision (acclient.c:320127) -> CTransition::check_collisions (acclient.c:312174)
+    internal bool CheckCollision(RetailSweep sweep, PhysicsObj mover)
+    {
+        Transition? t = sweep.Pool.Make();
+        if (t is null)
+        {
+            return false;
+        }
+
+        try
+        {
+            t.InitObject(this, GetObjectInfo(t, false));
+            InitSpheres(t);
+            Position pos = Position;
+            t.InitPath(sweep.Cells.GetVisible(CellId), pos, pos);
+            SpherePath path = t.SpherePath;
+            path.InsertType = InsertType.Placement;
+            path.CheckPos = path.CurrPos;
+            path.CheckCell = path.CurrCell;
+            path.CellArrayValid = false;
+            path.CacheGlobalSphere();
+            return mover.FindObjCollisions(t) != TransitionState.Ok;
+        }
+        finally
+        {
+            sweep.Pool.Cleanup();
+        }
     }
 
     /// <summary>True when this object, where it stands, overlaps an object shadowed in any cell it overlaps.</summary>
     // retail: CPhysicsObj::ethereal_check_for_collisions (acclient.c:317831)
-    public bool EtherealCheckForCollisions()
+    internal bool EtherealCheckForCollisions()
     {
         for (int i = 0; i < NumShadowObjects; i++)
         {

@@ -303,7 +303,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>
     /// Makes the object ethereal, or tries to make it solid: when it would overlap something (asked through the world's
-    /// <see cref="TransitionSeam"/>) it stays ethereal and CHECK_ETHEREAL is set so the next step retries.
+    /// <see cref="CollisionSweep"/>) it stays ethereal and CHECK_ETHEREAL is set so the next step retries.
     /// </summary>
     /// <returns>True when the request took effect now.</returns>
     // retail: CPhysicsObj::set_ethereal (acclient.c:319046)
@@ -318,7 +318,7 @@ public sealed partial class PhysicsObj
         }
 
         _state &= ~PhysicsState.Ethereal;
-        if (Parent is not null || CellId == 0 || !World.Transition.EtherealCheckForCollisions(this))
+        if (Parent is not null || CellId == 0 || !World.Sweep.EtherealCheckForCollisions(this))
         {
             _transientState &= ~TransientState.CheckEthereal;
             return true;

@@ -87,7 +87,7 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>
-    /// Places the object at <paramref name="p"/> through the world's <see cref="TransitionSeam"/> with the flags retail uses for a
+    /// Places the object at <paramref name="p"/> through the world's <see cref="CollisionSweep"/> with the flags retail uses for a
     /// simple move: PLACEMENT-free teleport with a position event, plus SLIDE when <paramref name="sliding"/>.
     /// </summary>
     /// <exception cref="ArgumentException">The frame is not valid (NaN, non-unit quaternion); state unchanged.</exception>
@@ -104,7 +104,7 @@ public sealed partial class PhysicsObj
         return SetPosition(p, flags);
     }
 
-    /// <summary>Places the object at <paramref name="p"/> through the world's <see cref="TransitionSeam"/>.</summary>
+    /// <summary>Places the object at <paramref name="p"/> through the world's <see cref="CollisionSweep"/>.</summary>
     /// <exception cref="ArgumentException">The frame is not valid (NaN, non-unit quaternion); state unchanged.</exception>
     // retail: CPhysicsObj::SetPosition (acclient.c:323289)
     public SetPositionError SetPosition(in Position p, SetPositionFlags flags)
@@ -115,7 +115,7 @@ public sealed partial class PhysicsObj
             throw new ArgumentException("Position frame must be valid.", nameof(p));
         }
 
-        return World.Transition.SetPosition(this, p, flags);
+        return World.Sweep.SetPosition(this, p, flags);
     }
 
     /// <summary>
@@ -140,7 +140,7 @@ public sealed partial class PhysicsObj
         }
 
         UpdateTime = World.CurrentTime;
-        if (World.Transition.SetPosition(this, _position, SetPositionFlags.Placement | SetPositionFlags.Slide) != SetPositionError.Ok)
+        if (World.Sweep.SetPosition(this, _position, SetPositionFlags.Placement | SetPositionFlags.Slide) != SetPositionError.Ok)
         {
             return false;
         }
@@ -162,7 +162,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>
     /// Commits a successful sweep or placement: cell, frame, contact plane, CONTACT / WATER_CONTACT / ON_WALKABLE / SLIDING,
-    /// acceleration, then the collision reports and cell shadows through the world's <see cref="TransitionSeam"/>.
+    /// acceleration, then the collision reports and cell shadows through the world's <see cref="CollisionSweep"/>.
     /// A result with no cell sends the object to the lost cell.
     /// </summary>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
@@ -242,10 +242,10 @@ public sealed partial class PhysicsObj
             _transientState &= ~TransientState.Sliding;
         }
 
-        World.Transition.HandleAllCollisions(this, prevContact, prevOnWalkable);
+        World.Sweep.HandleAllCollisions(this, prevContact, prevOnWalkable);
         if (CellId != 0)
         {
-            World.Transition.UpdateCellShadows(this);
+            World.Sweep.UpdateCellShadows(this);
         }
     }
 

@@ -96,4 +96,9 @@ public sealed partial class PhysicsObj
         MaterializeIfLazy();
         return _scene.PlayerDistance;
     }
+
+    /// <summary>Writes the ACTIVE bit the scene's lazy bookkeeping evaluated for a dormant object (the bit retail's visits would
+    /// have left); nothing else of the transient state changes.</summary>
+    internal void SetLazyActive(bool active) =>
+        _transientState = active ? _transientState | TransientState.Active : _transientState & ~TransientState.Active;
 }

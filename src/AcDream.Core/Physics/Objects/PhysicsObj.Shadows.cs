@@ -1,6 +1,10 @@
 using System;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects.Parts;
 
 namespace AcDream.Core.Physics.Objects;
 
@@ -11,14 +15,14 @@ public sealed partial class PhysicsObj
 
     /// <summary>Shadows made on the first placement: enough for one sphere on a cell corner (4 cells), so that walking
     /// around allocates nothing; more are made only for objects overlapping more cells.</summary>
-    public const int InitialShadowCapacity = 4;
+    internal const int InitialShadowCapacity = 4;
 
     /// <summary>Number of shadows in use. Retail: <c>num_shadow_objects</c>.</summary>
-    public int NumShadowObjects { get; private set; }
+    internal int NumShadowObjects { get; private set; }
 
     /// <summary>The shadows in use, one per overlapped cell (a shadow's <see cref="ShadowObj.Cell"/> is null when that
     /// cell is not loaded). Retail: <c>shadow_objects</c>.</summary>
-    public ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
+    internal ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
 
     /// <summary>
     /// Puts a shadow of the object (and of its attached children) in every cell of <paramref name="cellArray"/>; a particle
@@ -28,7 +32,7 @@ public sealed partial class PhysicsObj
     /// <param name="cellArray">The cells the object overlaps (a sweep's cell array).</param>
     /// <param name="ownCell">The object's own cell (used for particle emitters only).</param>
     // retail: CPhysicsObj::add_shadows_to_cells (acclient.c:321977)
-    public void AddShadowsToCells(CellArray cellArray, ObjCell? ownCell)
+    internal void AddShadowsToCells(CellArray cellArray, ObjCell? ownCell)
     {
         ArgumentNullException.ThrowIfNull(cellArray);
         if ((_state & PhysicsState.ParticleEmitter) != 0)
@@ -75,7 +79,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Takes every shadow of the object (and of its attached children) out of its cell.</summary>
     // retail: CPhysicsObj::remove_shadows_from_cells (acclient.c:318417)
-    public void RemoveShadowsFromCells()
+    internal void RemoveShadowsFromCells()
     {
         for (int i = 0; i < NumShadowObjects; i++)
         {
@@ -130,5 +134,67 @@ public sealed partial class PhysicsObj
         {
             _shadowObjects[i] = new ShadowObj(this);
         }
+    }
+
+    /// <summary>
+    /// Updates the object's shadows after a commit through <paramref name="sweep"/>: an object with a physics BSP is
+    /// re-shadowed where it stands (<see cref="CalcCrossCells"/>), any other in the cells of the last transition.
+    /// </summary>
+    /// <remarks>An object with a physics BSP is shadowed in its own cell and the cells of its sorting sphere (retail: its
+    /// parts' bounding boxes).</remarks>
+    // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503), the shadow update at its end
+    internal void UpdateCellShadows(RetailSweep sweep)
+    {
+        if ((State & PhysicsState.HasPhysicsBsp) != 0)
+        {
+            CalcCrossCells(sweep);
+        }
+        else if (sweep.LastTransition is not null && sweep.LastTransition.CellArray.NumCells != 0)
+        {
+            RemoveShadowsFromCells();
+            AddShadowsToCells(sweep.LastTransition.CellArray, sweep.Cells.GetVisible(CellId));
+        }
+    }
+
+    /// <summary>
+    /// Re-shadows the object where it stands: in the cells its cylinder spheres overlap, or, without them (or with a
+    /// physics BSP), the cells of its sorting sphere (plus its own cell for a BSP object). Uses <paramref name="sweep"/>'s
+    /// cells and its scratch cell array.
+    /// </summary>
+    // retail: CPhysicsObj::calc_cross_cells (acclient.c:322446)
+    internal void CalcCrossCells(RetailSweep sweep)
+    {
+        CellArray ca = sweep.CrossCells;
+        ca.Clear();
+        Position p = Position;
+        IPartCollision? parts = PartArray as IPartCollision;
+        ReadOnlySpan<CylSphere> cyl = parts is null ? default : parts.CylSpheres;
+        Span<Sphere> spheres = stackalloc Sphere[10];
+        int n = 0;
+        if ((State & PhysicsState.HasPhysicsBsp) == 0 && cyl.Length != 0)
+        {
+            n = cyl.Length <= 10 ? cyl.Length : 10;
+            for (int i = 0; i < n; i++)
+            {
+                spheres[i] = new Sphere(p.LocalToGlobal(p, cyl[i].LowPt), cyl[i].Radius);
+            }
+        }
+        else
+        {
+            // Retail: an object with a physics BSP is listed by its parts' bounding boxes (find_bbox_cell_list,
+            // acclient.c:318275, via the cells' part tests); the port uses the sorting sphere for it too (divergences.md).
+            Sphere sorting = parts is null ? Sphere.Dummy : parts.SortingSphere;
+            spheres[0] = new Sphere(p.LocalToGlobal(p, sorting.Center), sorting.Radius);
+            n = 1;
+        }
+
+        CellList.FindCellList(sweep.Cells, p, spheres[..n], ca, false, null);
+        if ((State & PhysicsState.HasPhysicsBsp) != 0)
+        {
+            ca.AddCell(CellId, sweep.Cells.GetVisible(CellId));
+        }
+
+        RemoveShadowsFromCells();
+        AddShadowsToCells(ca, sweep.Cells.GetVisible(CellId));
     }
 }

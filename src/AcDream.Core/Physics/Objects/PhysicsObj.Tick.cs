@@ -105,8 +105,8 @@ public sealed partial class PhysicsObj
                     }
 
                     // non-retail: a scene without SceneEffects.Collision moves freely (retail: the transition)
-                    TransitionSeam sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Transition : FreeSpaceTransition.Instance;
-                    if (sweep.FindTransitionalPosition(this, _position, newPos, false, ref _transitionScratch))
+                    CollisionSweep sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Sweep : FreeSpaceSweep.Instance;
+                    if (sweep.SweepObject(this, _position, newPos, false, ref _transitionScratch))
                     {
                         Vector3 offset = _position.GetOffset(_transitionScratch.CurrentPosition);
                         CachedVelocity = DivideByQuantum(offset, quantum);

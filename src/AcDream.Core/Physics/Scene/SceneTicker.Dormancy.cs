@@ -80,7 +80,7 @@ internal sealed partial class SceneTicker
             return;
         }
 
-        obj._transientState = active ? obj._transientState | TransientState.Active : obj._transientState & ~TransientState.Active;
+        obj.SetLazyActive(active);
         s.UpdateTime = updateTime;
         if (PlayerSeenPosition(obj, visitedThisTick, out Position seen))
         {

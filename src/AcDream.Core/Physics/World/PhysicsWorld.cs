@@ -76,21 +76,21 @@ public sealed partial class PhysicsWorld
 
     private bool _objectMaintenanceActive = true;
 
-    /// <summary>The collision sweep. <see cref="FreeSpaceTransition.Instance"/> by default.</summary>
+    /// <summary>The collision sweep. <see cref="FreeSpaceSweep.Instance"/> by default.</summary>
     /// <exception cref="ArgumentNullException">The value is null.</exception>
-    /// <exception cref="ArgumentException">The seam's cells already serve another world (see <see cref="RetailTransition"/>).</exception>
-    public TransitionSeam Transition
+    /// <exception cref="ArgumentException">The seam's cells already serve another world (see <see cref="RetailSweep"/>).</exception>
+    public CollisionSweep Sweep
     {
-        get => _transition;
+        get => _sweep;
         set
         {
             ArgumentNullException.ThrowIfNull(value);
             value.AttachTo(this);
-            _transition = value;
+            _sweep = value;
         }
     }
 
-    private TransitionSeam _transition = FreeSpaceTransition.Instance;
+    private CollisionSweep _sweep = FreeSpaceSweep.Instance;
 
     /// <summary>Optional step observer (tests, diagnostics); null costs nothing.</summary>
     public IStepObserver? StepObserver { get; set; }

@@ -9,7 +9,7 @@ using AcDream.Core.Tests.Support;
 namespace AcDream.Core.Tests.Replay.Harness;
 
 /// <summary>
-/// Shared scene for the manager tests: a world on <see cref="FlatGroundTransition"/>, a player at the landblock centre and a
+/// Shared scene for the manager tests: a world on <see cref="ReplayGroundSweep"/>, a player at the landblock centre and a
 /// creature (one collision sphere, radius 0.5 m) standing on the ground, both outdoors in landblock 0x7F7F.
 /// </summary>
 public sealed class ManagerScene
@@ -22,8 +22,8 @@ public sealed class ManagerScene
     public ManagerScene(Vector3 creatureOrigin, float creatureHeading = 0f, double startTime = 0.0, Vector3? playerOrigin = null)
     {
         World = new PhysicsWorld(startTime);
-        Ground = new FlatGroundTransition();
-        World.Transition = Ground;
+        Ground = new ReplayGroundSweep();
+        World.Sweep = Ground;
         Player = World.CreateObject(1);
         Player.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f };
         Player.EnterWorld(At(playerOrigin ?? new Vector3(96f, 96f, 0f)));
@@ -39,7 +39,7 @@ public sealed class ManagerScene
     public PhysicsWorld World { get; }
 
     /// <summary>The ground seam (placement counter, failure switch).</summary>
-    public FlatGroundTransition Ground { get; }
+    public ReplayGroundSweep Ground { get; }
 
     /// <summary>The player.</summary>
     public PhysicsObj Player { get; }

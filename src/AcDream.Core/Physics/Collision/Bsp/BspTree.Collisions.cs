@@ -8,8 +8,8 @@ namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>
 /// The BSP as a collision body of the sweep: the entry points a cell or a physics part calls with the transition's
-/// spheres already in the tree's local space (<see cref="SpherePath.CacheLocalSpaceSphere"/>), and their helpers.
-/// Results go back to landblock space through <see cref="SpherePath.LocalSpacePos"/> and the owner's scale.
+/// spheres already in the tree's local space (the sphere path's <c>CacheLocalSpaceSphere</c>), and their helpers.
+/// Results go back to landblock space through the sphere path's <c>LocalSpacePos</c> and the owner's scale.
 /// </summary>
 public sealed partial class BspTree
 {
@@ -32,7 +32,7 @@ public sealed partial class BspTree
     /// <param name="scale">The scale of the tree's owner (results are scaled back by it).</param>
     /// <returns>The transition state (OK, Collided, Adjusted or Slid).</returns>
     // retail: BSPTREE::find_collisions (acclient.c:361295)
-    public TransitionState FindCollisions(Transition transition, float scale)
+    internal TransitionState FindCollisions(Transition transition, float scale)
     {
         ArgumentNullException.ThrowIfNull(transition);
         SpherePath path = transition.SpherePath;
@@ -155,7 +155,7 @@ public sealed partial class BspTree
     /// <returns>OK when nothing was touched, Adjusted after a push that freed the spheres, Collided when no free place
     /// was found.</returns>
     // retail: BSPTREE::placement_insert (acclient.c:360778)
-    public TransitionState PlacementInsert(Transition transition)
+    internal TransitionState PlacementInsert(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         SpherePath path = transition.SpherePath;
@@ -278,7 +278,7 @@ public sealed partial class BspTree
     /// normal; with it, the sphere is moved back to where it touches (<see cref="AdjustToPlane"/>).
     /// </summary>
     // retail: BSPTREE::collide_with_pt (acclient.c:361123)
-    public TransitionState CollideWithPt(ObjectInfo obj, SpherePath path, CollisionInfo collisions, in Sphere checkPos, Vector3 currPos,
+    internal TransitionState CollideWithPt(ObjectInfo obj, SpherePath path, CollisionInfo collisions, in Sphere checkPos, Vector3 currPos,
         Polygon hitPoly, Vector3 contactPoint, float scale)
     {
         ArgumentNullException.ThrowIfNull(obj);
@@ -314,7 +314,7 @@ public sealed partial class BspTree
     /// the contact plane becomes that polygon's plane and the polygon is remembered as the walkable.
     /// </summary>
     // retail: BSPTREE::step_sphere_down (acclient.c:361176)
-    public TransitionState StepSphereDown(SpherePath path, CollisionInfo collisions, in Sphere checkPos, float scale)
+    internal TransitionState StepSphereDown(SpherePath path, CollisionInfo collisions, in Sphere checkPos, float scale)
     {
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(collisions);
@@ -352,7 +352,7 @@ public sealed partial class BspTree
 
     /// <summary>A grounded sphere hit a polygon: try to step up onto it (normal lifted to landblock space); else slide along it.</summary>
     // retail: BSPTREE::step_sphere_up (acclient.c:361071)
-    public static TransitionState StepSphereUp(Transition transition, Vector3 collisionNormal)
+    internal static TransitionState StepSphereUp(Transition transition, Vector3 collisionNormal)
     {
         ArgumentNullException.ThrowIfNull(transition);
         Vector3 n = LocalNormalToGlobal(transition.SpherePath, collisionNormal);
@@ -366,7 +366,7 @@ public sealed partial class BspTree
 
     /// <summary>Slides the first global sphere along a local-space normal lifted to landblock space.</summary>
     // retail: BSPTREE::slide_sphere (acclient.c:361030)
-    public static TransitionState SlideSphere(SpherePath path, CollisionInfo collisions, Vector3 collisionNormal)
+    internal static TransitionState SlideSphere(SpherePath path, CollisionInfo collisions, Vector3 collisionNormal)
     {
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(collisions);
@@ -376,7 +376,7 @@ public sealed partial class BspTree
 
     /// <summary>The walkable probe: Collided when the sphere stands on a walkable polygon of the tree, OK otherwise.</summary>
     // retail: BSPTREE::check_walkable (acclient.c:361051)
-    public TransitionState CheckWalkable(SpherePath path, in Sphere checkPos, float scale)
+    internal TransitionState CheckWalkable(SpherePath path, in Sphere checkPos, float scale)
     {
         ArgumentNullException.ThrowIfNull(path);
         Sphere valid = checkPos;

@@ -40,7 +40,7 @@ public sealed partial class BspTree
     /// <summary>True when the sphere touches a polygon it can stand on (steep enough for the path's walkable allowance, and
     /// standing on it within half the radius).</summary>
     // retail: BSPNODE::hits_walkable (acclient.c:363614) / BSPLEAF::hits_walkable (acclient.c:364274)
-    public bool HitsWalkable(SpherePath path, in Sphere validPos, Vector3 up) => HitsWalkable(Root, path, validPos, up);
+    internal bool HitsWalkable(SpherePath path, in Sphere validPos, Vector3 up) => HitsWalkable(Root, path, validPos, up);
 
     /// <summary>
     /// Every walkable polygon the sphere touches moves it back along <paramref name="movement"/> onto its plane
@@ -48,7 +48,7 @@ public sealed partial class BspTree
     /// <paramref name="changed"/> is set.
     /// </summary>
     // retail: BSPNODE::find_walkable (acclient.c:363662) / BSPLEAF::find_walkable (acclient.c:364310)
-    public void FindWalkable(SpherePath path, ref Sphere validPos, ref Polygon? polygon, Vector3 movement, Vector3 up, ref bool changed) =>
+    internal void FindWalkable(SpherePath path, ref Sphere validPos, ref Polygon? polygon, Vector3 movement, Vector3 up, ref bool changed) =>
         FindWalkable(Root, path, ref validPos, ref polygon, movement, up, ref changed);
 
     /// <summary>True when the point is in a solid leaf (negative side: plane distance &lt; 0).</summary>

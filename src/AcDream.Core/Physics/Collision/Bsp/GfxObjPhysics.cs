@@ -38,7 +38,7 @@ public sealed class GfxObjPhysics
     /// <see cref="BspTree.FindCollisions"/>. OK when none meets the sphere.
     /// </summary>
     // retail: CGfxObj::find_obj_collisions (acclient.c:356514)
-    public TransitionState FindObjCollisions(Transition transition, float scale)
+    internal TransitionState FindObjCollisions(Transition transition, float scale)
     {
         ArgumentNullException.ThrowIfNull(transition);
         SpherePath path = transition.SpherePath;

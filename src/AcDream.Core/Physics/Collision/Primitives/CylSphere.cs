@@ -51,7 +51,7 @@ public partial struct CylSphere : IEquatable<CylSphere>
     /// transition's check spheres. Caches the spheres in the object's local space first (a step up reads it).
     /// </summary>
     // retail: CCylSphere::intersects_sphere(Position*, float, CTransition*) (acclient.c:362243)
-    public readonly TransitionState IntersectsSphere(in Position p, float scale, Transition transition)
+    internal readonly TransitionState IntersectsSphere(in Position p, float scale, Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         SpherePath path = transition.SpherePath;
@@ -68,7 +68,7 @@ public partial struct CylSphere : IEquatable<CylSphere>
     /// once a landing was requested, the flat contact plane on top.
     /// </summary>
     // retail: CCylSphere::intersects_sphere(CTransition*) (acclient.c:362034)
-    public readonly TransitionState IntersectsSphere(Transition transition)
+    internal readonly TransitionState IntersectsSphere(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         SpherePath path = transition.SpherePath;

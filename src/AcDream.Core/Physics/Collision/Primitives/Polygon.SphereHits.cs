@@ -115,7 +115,7 @@ public sealed partial class Polygon
     /// <remarks>Retail calls both sphere tests and, when they disagree, calls them again (a debugging hook with no
     /// effect); the slow-but-sure answer is returned.</remarks>
     // retail: CPolygon::walkable_hits_sphere (acclient.c:360518)
-    public bool WalkableHitsSphere(SpherePath path, in Sphere sphere, Vector3 up)
+    internal bool WalkableHitsSphere(SpherePath path, in Sphere sphere, Vector3 up)
     {
         if (!((double)Plane.N.Z * up.Z + (double)Plane.N.Y * up.Y + (double)up.X * Plane.N.X > path.WalkableAllowance))
         {
@@ -175,7 +175,7 @@ public sealed partial class Polygon
     /// False (nothing moved) when the movement runs along the plane or the fraction is out of range.
     /// </summary>
     // retail: CPolygon::adjust_sphere_to_plane (acclient.c:359533)
-    public bool AdjustSphereToPlane(SpherePath path, ref Sphere validPos, Vector3 movement)
+    internal bool AdjustSphereToPlane(SpherePath path, ref Sphere validPos, Vector3 movement)
     {
         double dist = Plane.N.Y * (double)validPos.Center.Y + Plane.N.Z * (double)validPos.Center.Z + validPos.Center.X * (double)Plane.N.X + Plane.D;
         double dp = Plane.N.Z * (double)movement.Z + Plane.N.Y * (double)movement.Y + Plane.N.X * (double)movement.X;

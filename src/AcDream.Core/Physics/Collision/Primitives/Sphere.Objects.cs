@@ -66,7 +66,7 @@ public partial struct Sphere
     /// <param name="transition">The transition being tested.</param>
     /// <param name="isCreature">The owner is a creature (or a missile): a step down or landing ignores it.</param>
     // retail: CSphere::intersects_sphere(Position*, float, CTransition*, int) (acclient.c:359389)
-    public readonly TransitionState IntersectsSphere(in Position p, float scale, Transition transition, bool isCreature)
+    internal readonly TransitionState IntersectsSphere(in Position p, float scale, Transition transition, bool isCreature)
     {
         var local = new Vector3(scale * Center.X, scale * Center.Y, scale * Center.Z);
         var global = new Sphere(transition.SpherePath.CheckPos.LocalToGlobal(p, local), scale * Radius);
@@ -80,7 +80,7 @@ public partial struct Sphere
     /// and once a landing was requested, the contact plane on top of the sphere.
     /// </summary>
     // retail: CSphere::intersects_sphere(CTransition*, int) (acclient.c:359156)
-    public readonly TransitionState IntersectsSphere(Transition transition, bool isCreature)
+    internal readonly TransitionState IntersectsSphere(Transition transition, bool isCreature)
     {
         SpherePath path = transition.SpherePath;
         Sphere gs0 = path.GlobalSphere[0];

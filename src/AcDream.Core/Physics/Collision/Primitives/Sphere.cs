@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics.Collision.Primitives;
 
 /// <summary>
 /// A collision sphere: a centre and a radius, in metres. Retail: <c>CSphere</c> (acclient.h:31107,
-/// PORTAL/cgeometry/CSphere.c). Objects sweep up to two of them (<see cref="SpherePath"/>).
+/// PORTAL/cgeometry/CSphere.c). Objects sweep up to two of them (the sweep's sphere path, retail <c>SPHEREPATH</c>).
 /// </summary>
 public partial struct Sphere : IEquatable<Sphere>
 {

@@ -30,8 +30,10 @@ public interface IPartCollision
     /// <c>gfxobj_scale.z</c>) and runs the BSP's object query; returns OK for a part without one.
     /// </summary>
     /// <remarks>This is the seam to the BSP module (retail <c>CPhysicsPart::find_obj_collisions</c>, acclient.c:314655 →
-    /// <c>CGfxObj::find_obj_collisions</c>); <see cref="PhysicsPartCollision.FindObjCollisions"/> does the caching.</remarks>
-    TransitionState FindPartObjCollisions(int index, Transition transition);
+    /// <c>CGfxObj::find_obj_collisions</c>); <see cref="PhysicsPartCollision.FindObjCollisions"/> does the caching. The
+    /// transition is engine-internal: the built-in part array answers with its BSP parts, and any other implementation
+    /// answers OK (its parts carry no physics BSP).</remarks>
+    internal TransitionState FindPartObjCollisions(int index, Transition transition) => TransitionState.Ok;
 }
 
 /// <summary>Helpers for <see cref="IPartCollision"/> implementations.</summary>
@@ -47,7 +49,7 @@ public static class PhysicsPartCollision
     /// <param name="bspQuery">The BSP query, or null when the part has no physics BSP.</param>
     /// <param name="state">Passed to <paramref name="bspQuery"/> (the part's BSP, typically), so the query needs no closure.</param>
     // retail: CPhysicsPart::find_obj_collisions (acclient.c:314655)
-    public static TransitionState FindObjCollisions<TState>(in Position partPosition, float scaleZ, Transition transition,
+    internal static TransitionState FindObjCollisions<TState>(in Position partPosition, float scaleZ, Transition transition,
         Func<TState, Transition, float, TransitionState>? bspQuery, TState state)
     {
         ArgumentNullException.ThrowIfNull(transition);

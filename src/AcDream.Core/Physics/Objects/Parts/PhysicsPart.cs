@@ -59,7 +59,7 @@ public sealed class PhysicsPart
     /// tested against the graphics object's physics BSP.
     /// </summary>
     // retail: CPhysicsPart::find_obj_collisions (acclient.c:314655)
-    public TransitionState FindObjCollisions(Transition transition)
+    internal TransitionState FindObjCollisions(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         transition.SpherePath.CacheLocalSpaceSphere(_pos, GfxObjScale.Z);

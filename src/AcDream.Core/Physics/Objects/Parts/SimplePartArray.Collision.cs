@@ -68,7 +68,7 @@ public sealed partial class SimplePartArray : IPartCollision
     /// placed by <c>CPartArray::SetFrame</c>; the built-in part array places them when asked), then the BSP module's
     /// <see cref="PhysicsPart.FindObjCollisions"/> runs.</remarks>
     // retail: CPhysicsPart::find_obj_collisions (acclient.c:314655), reached from CPartArray::FindObjCollisions (acclient.c:325463)
-    public TransitionState FindPartObjCollisions(int index, Transition transition)
+    TransitionState IPartCollision.FindPartObjCollisions(int index, Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
         if ((uint)index >= (uint)_physicsParts.Length)

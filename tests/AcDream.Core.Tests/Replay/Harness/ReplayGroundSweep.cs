@@ -7,12 +7,12 @@ using AcDream.Core.Tests.Support;
 namespace AcDream.Core.Tests.Replay.Harness;
 
 /// <summary>
-/// A test <see cref="TransitionSeam"/>: endless flat outdoor ground at z = 0. A sweep ends where it was asked to, re-homed
+/// A test <see cref="CollisionSweep"/>: endless flat outdoor ground at z = 0. A sweep ends where it was asked to, re-homed
 /// to the outdoor cell under it; at or below <see cref="ContactHeight"/> it is clamped to the ground with a z-up contact
 /// plane (CONTACT and ON_WALKABLE follow), above it the object is airborne. Placements do the same and can be made to fail.
 /// </summary>
 /// <remarks>Stands in for the collision module, which the manager tests do not exercise. Allocation-free.</remarks>
-public sealed class FlatGroundTransition : TransitionSeam
+public sealed class ReplayGroundSweep : CollisionSweep
 {
     /// <summary>Height under which a sweep or placement lands on the ground, metres.</summary>
     public const float ContactHeight = 0.02f;
@@ -27,7 +27,7 @@ public sealed class FlatGroundTransition : TransitionSeam
     public SetPositionFlags LastPlacementFlags { get; private set; }
 
     /// <inheritdoc />
-    public override bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
+    public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
     {
         result = Land(newPos);
         return true;

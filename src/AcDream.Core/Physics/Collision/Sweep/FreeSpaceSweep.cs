@@ -4,23 +4,23 @@ using AcDream.Core.Physics.Objects;
 namespace AcDream.Core.Physics.Collision.Sweep;
 
 /// <summary>
-/// The default <see cref="TransitionSeam"/>: a world with no collision geometry. A sweep always succeeds and ends where it
+/// The default <see cref="CollisionSweep"/>: a world with no collision geometry. A sweep always succeeds and ends where it
 /// was asked to, in the same cell, with no contact plane and no sliding normal; a placement succeeds in the requested cell
 /// (adjusted to the outdoor cell under the origin, as <c>store_position</c> does), or sends the object to the lost cell when
 /// the cell id is not a valid world cell.
 /// </summary>
 /// <remarks>Not retail: retail always sweeps against cells. This stands in until the collision module provides the sweep.</remarks>
-public sealed class FreeSpaceTransition : TransitionSeam
+public sealed class FreeSpaceSweep : CollisionSweep
 {
     /// <summary>The shared stateless instance.</summary>
-    public static readonly FreeSpaceTransition Instance = new();
+    public static readonly FreeSpaceSweep Instance = new();
 
-    private FreeSpaceTransition()
+    private FreeSpaceSweep()
     {
     }
 
     /// <inheritdoc />
-    public override bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
+    public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
     {
         result = TransitionResult.FreeSpace(newPos);
         result.CurrentCellId = obj.CellId;

@@ -6,13 +6,13 @@ namespace AcDream.Core.Physics.Collision.Sweep;
 
 /// <summary>
 /// The one seam through which the collision sweep plugs into the object tick. A world holds one; the built-in
-/// <see cref="FreeSpaceTransition"/> sweeps through empty space until the collision module provides the retail sweep.
+/// <see cref="FreeSpaceSweep"/> sweeps through empty space until the collision module provides the retail sweep.
 /// </summary>
 /// <remarks>Every member is called inside the tick and must not allocate.</remarks>
-public abstract class TransitionSeam
+public abstract class CollisionSweep
 {
     /// <summary>
-    /// Called when a world takes this seam as its <see cref="PhysicsWorld.Transition"/>. A seam that keeps per-world state
+    /// Called when a world takes this seam as its <see cref="PhysicsWorld.Sweep"/>. A seam that keeps per-world state
     /// (cells holding the shadows of one world's objects) refuses a second world here.
     /// </summary>
     /// <exception cref="ArgumentException">The seam, or the cells it sweeps, already serve another world.</exception>
@@ -26,7 +26,7 @@ public abstract class TransitionSeam
     /// the object keeps its origin.
     /// </summary>
     // retail: CPhysicsObj::transition (acclient.c:320060)
-    public abstract bool FindTransitionalPosition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result);
+    public abstract bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result);
 
     /// <summary>
     /// Places <paramref name="obj"/> at <paramref name="pos"/> (retail <c>CPhysicsObj::SetPosition</c>, acclient.c:323289,

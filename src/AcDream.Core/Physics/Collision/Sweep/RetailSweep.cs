@@ -1,0 +1,184 @@
+using System;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
+
+namespace AcDream.Core.Physics.Collision.Sweep;
+
+/// <summary>
+/// The retail collision sweep plugged into the object tick: <see cref="PhysicsWorld.Sweep"/> set to an instance of
+/// this class makes every object move through the cells of <see cref="Cells"/> (outdoor terrain today) exactly as
+/// retail's <c>CPhysicsObj::transition</c> moves it, and answers placements and the collision response.
+/// </summary>
+/// <remarks>One instance per world: it owns the world's pool of ten transitions (retail's <c>CTransition::transit</c>). Nothing here allocates per call.</remarks>
+public sealed class RetailSweep : CollisionSweep
+{
+    /// <summary>
+    /// How far, in metres (in x and in y, signed), a non-sliding placement may end from the requested spot. Retail:
+    /// 0.050000001 in <c>CPhysicsObj::CheckPositionInternal</c> (acclient.c:319172), float bits 0x3D4CCCCD.
+    /// </summary>
+    public const float PlacementTolerance = 0.050000001f;
+
+    /// <summary>Creates the sweep over <paramref name="cells"/>.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="cells"/> is null.</exception>
+    public RetailSweep(ICellSource cells)
+    {
+        ArgumentNullException.ThrowIfNull(cells);
+        Cells = cells;
+        Pool = new TransitionPool(cells);
+    }
+
+    /// <summary>Where cells are found.</summary>
+    public ICellSource Cells { get; }
+
+    /// <inheritdoc />
+    /// <remarks>Land and indoor cells hold the shadows of the objects in them (<c>CObjCell::shadow_object_list</c>), so a
+    /// <see cref="TerrainWorld"/> (or <see cref="WorldCells"/>) serves exactly one <see cref="PhysicsWorld"/>: sharing it would let
+    /// one world's objects collide with the other's. Give each world its own terrain world (the landblock data can be shared).</remarks>
+    internal override void AttachTo(PhysicsWorld world)
+    {
+        PhysicsWorld? owner = Cells switch
+        {
+            TerrainWorld t => t.OwnerWorld,
+            WorldCells c => c.OwnerWorld ?? c.Terrain.OwnerWorld,
+            _ => null,
+        };
+        if (owner is not null && owner != world)
+        {
+            throw new ArgumentException(
+                "These cells already hold another PhysicsWorld's objects (their shadows); give each world its own TerrainWorld.",
+                nameof(world));
+        }
+
+        switch (Cells)
+        {
+            case TerrainWorld t:
+                t.OwnerWorld = world;
+                break;
+            case WorldCells c:
+                c.OwnerWorld = world;
+                c.Terrain.OwnerWorld = world;
+                break;
+        }
+    }
+
+    /// <summary>The ten transitions (retail's static pool, per world here).</summary>
+    internal TransitionPool Pool { get; }
+
+    /// <summary>The scratch cell array of <see cref="PhysicsObj.CalcCrossCells"/>.</summary>
+    internal CellArray CrossCells { get; } = new();
+
+    /// <summary>Receives environment collision reports (retail: the weenie). Null reports nothing.</summary>
+    public ICollisionListener? CollisionListener { get; set; }
+
+    /// <summary>Receives object collision reports (retail: the objects' weenies). Null reports nothing; the collision
+    /// table is kept either way.</summary>
+    public IObjectCollisionListener? ObjectCollisionListener { get; set; }
+
+    /// <summary>The transition of the last successful sweep or placement; readable until the next sweep.</summary>
+    internal Transition? LastTransition { get; set; }
+
+    /// <summary>Sweeps <paramref name="obj"/> in a pooled transition (see <see cref="PhysicsObj.RunTransition"/>).</summary>
+    /// <exception cref="ArgumentException">A position has a NaN or infinite origin (nothing is changed).</exception>
+    internal Transition? RunTransition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        return obj.RunTransition(this, oldPos, newPos, adminMove);
+    }
+
+    /// <inheritdoc />
+    // retail: CPhysicsObj::transition (acclient.c:320060), result read by UpdateObjectInternal (acclient.c:322718)
+    public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
+    {
+        Transition? t = RunTransition(obj, oldPos, newPos, adminMove);
+        if (t is null)
+        {
+            return false;
+        }
+
+        Fill(t, ref result);
+        LastTransition = t;
+        return true;
+    }
+
+    /// <inheritdoc />
+    /// <remarks>Scatter placement (SCATTER / RANDOMSCATTER) and the weenie's forced cells are not ported.</remarks>
+    public override SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        return obj.SetPositionInternal(this, pos, flags);
+    }
+
+    /// <inheritdoc />
+    public override void HandleAllCollisions(PhysicsObj obj, bool prevContact, bool prevOnWalkable)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        if (LastTransition is not null)
+        {
+            obj.HandleAllCollisions(this, LastTransition.CollisionInfo, prevContact, prevOnWalkable);
+        }
+    }
+
+    /// <summary>The collision response of a committed sweep (see <see cref="PhysicsObj.HandleAllCollisions"/>).</summary>
+    /// <returns>True when a collision was reported.</returns>
+    internal bool HandleAllCollisions(PhysicsObj obj, CollisionInfo collisions, bool prevContact, bool prevOnWalkable)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        return obj.HandleAllCollisions(this, collisions, prevContact, prevOnWalkable);
+    }
+
+    /// <inheritdoc />
+    /// <remarks>An object with a physics BSP is shadowed in its own cell and the cells of its sorting sphere (retail: its
+    /// parts' bounding boxes).</remarks>
+    public override void UpdateCellShadows(PhysicsObj obj)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        obj.UpdateCellShadows(this);
+    }
+
+    /// <summary>
+    /// Re-shadows <paramref name="obj"/> where it stands: in the cells its cylinder spheres overlap, or, without them (or
+    /// with a physics BSP), the cells of its sorting sphere (plus its own cell for a BSP object).
+    /// </summary>
+    public void CalcCrossCells(PhysicsObj obj)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        obj.CalcCrossCells(this);
+    }
+
+    /// <inheritdoc />
+    public override bool EtherealCheckForCollisions(PhysicsObj obj)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        return obj.EtherealCheckForCollisions();
+    }
+
+    /// <summary>True when <paramref name="mover"/>, where it stands, overlaps <paramref name="self"/> (see
+    /// <see cref="PhysicsObj.CheckCollision(RetailSweep, PhysicsObj)"/>).</summary>
+    internal bool CheckCollision(PhysicsObj self, PhysicsObj mover) => self.CheckCollision(this, mover);
+
+    /// <inheritdoc />
+    public override void ReportCollisionEnd(PhysicsObj obj, bool forceEnd)
+    {
+        ArgumentNullException.ThrowIfNull(obj);
+        obj.ReportCollisionEnd(this, forceEnd);
+    }
+
+    /// <summary>Copies what <see cref="PhysicsObj.CommitTransition"/> commits out of <paramref name="t"/>.</summary>
+    internal static void Fill(Transition t, ref TransitionResult result)
+    {
+        SpherePath path = t.SpherePath;
+        CollisionInfo ci = t.CollisionInfo;
+        result.CurrentPosition = path.CurrPos;
+        result.CurrentCellId = path.CurrCell?.Id ?? 0;
+        result.ContactPlaneValid = ci.ContactPlaneValid;
+        result.ContactPlaneNormal = ci.ContactPlane.N;
+        result.ContactPlaneD = ci.ContactPlane.D;
+        result.ContactPlaneCellId = ci.ContactPlaneCellId;
+        result.ContactPlaneIsWater = ci.ContactPlaneIsWater;
+        result.SlidingNormalValid = ci.SlidingNormalValid;
+        result.SlidingNormal = ci.SlidingNormal;
+    }
+}

@@ -1,0 +1,204 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects.Parts;
+
+namespace AcDream.Core.Physics.Objects;
+
+/// <summary>The object's retail sweep and placement: the pooled transition that moves it, and the placement that sets it down.</summary>
+public sealed partial class PhysicsObj
+{
+    /// <summary>
+    /// Sweeps the object from <paramref name="oldPos"/> to <paramref name="newPos"/> in a transition from
+    /// <paramref name="sweep"/>'s pool. Returns the transition (already given back to the pool, readable until the next
+    /// sweep) or null when the sweep failed or all ten transitions were in use.
+    /// </summary>
+    /// <exception cref="ArgumentException">A position has a NaN or infinite origin (nothing is changed).</exception>
+    // retail: CPhysicsObj::transition (acclient.c:320060)
+    internal Transition? RunTransition(RetailSweep sweep, in Position oldPos, in Position newPos, bool adminMove)
+    {
+        if (!VectorMath.IsFinite(oldPos.Frame.Origin) || !VectorMath.IsFinite(newPos.Frame.Origin))
+        {
+            throw new ArgumentException("Sweep positions must have finite origins.", nameof(newPos));
+        }
+
+        Transition? t = sweep.Pool.Make();
+        if (t is null)
+        {
+            return null;
+        }
+
+        bool ok;
+        try
+        {
+            ObjectInfoState state = GetObjectInfo(t, adminMove);
+            t.InitObject(this, state);
+            InitSpheres(t);
+            t.InitPath(sweep.Cells.GetVisible(CellId), oldPos, newPos);
+            TransientState ts = TransientState;
+            if ((ts & TransientState.StationaryStuck) != 0)
+            {
+                t.CollisionInfo.FramesStationaryFall = Transition.StationaryFallFrames;
+            }
+            else if ((ts & TransientState.StationaryStop) != 0)
+            {
+                t.CollisionInfo.FramesStationaryFall = 2;
+            }
+            else if ((ts & TransientState.StationaryFall) != 0)
+            {
+                t.CollisionInfo.FramesStationaryFall = 1;
+            }
+
+            ok = t.FindValidPosition();
+        }
+        finally
+        {
+            sweep.Pool.Cleanup();
+        }
+
+        return ok ? t : null;
+    }
+
+    /// <summary>
+    /// Places the object at <paramref name="pos"/> with a transition from <paramref name="sweep"/>'s pool: adjusts the
+    /// position to its cell, places the spheres there and commits the outcome (or sends the object to the lost cell).
+    /// </summary>
+    /// <remarks>Scatter placement (SCATTER / RANDOMSCATTER) and the weenie's forced cells are not ported.</remarks>
+    // retail: CPhysicsObj::SetPosition (acclient.c:323289) -> SetPositionInternal(sps) (acclient.c:323166)
+    //         -> SetPositionInternal(p, sps, transit) (acclient.c:323034)
+    internal SetPositionError SetPositionInternal(RetailSweep sweep, in Position pos, SetPositionFlags flags)
+    {
+        Transition? t = sweep.Pool.Make();
+        if (t is null)
+        {
+            return SetPositionError.GeneralFailure;
+        }
+
+        try
+        {
+            t.InitObject(this, ObjectInfoState.None);
+            InitSpheres(t);
+            Position p = pos;
+            ObjCell? cell = AdjustPosition(sweep, ref p, t.SpherePath.LocalSphere[0].Center);
+            if (cell is null)
+            {
+                GoToLostCell(p);
+                return SetPositionError.Ok;
+            }
+
+            if ((flags & SetPositionFlags.DoNotCreateCells) != 0)
+            {
+                t.CellArray.DoNotLoadCells = true;
+            }
+
+            if (!CheckPositionInternal(cell, ref p, t, flags))
+            {
+                sweep.LastTransition = t;
+                return HandleAllCollisions(sweep, t.CollisionInfo, false, false) ? SetPositionError.Collided : SetPositionError.NoValidPosition;
+            }
+
+            if (t.SpherePath.CurrCell is null)
+            {
+                return SetPositionError.NoCell;
+            }
+
+            var result = default(TransitionResult);
+            RetailSweep.Fill(t, ref result);
+            sweep.LastTransition = t;
+            CommitTransition(result);
+            return SetPositionError.Ok;
+        }
+        finally
+        {
+            sweep.Pool.Cleanup();
+        }
+    }
+
+    // retail: the sphere choice shared by transition (acclient.c:320060), check_collision and SetPosition
+    private void InitSpheres(Transition t)
+    {
+        IPartArray? parts = PartArray;
+        if (parts is not null && parts.NumSpheres != 0)
+        {
+            t.InitSphere(parts.Spheres, Scale);
+        }
+        else
+        {
+            Span<Sphere> dummy = stackalloc Sphere[1];
+            dummy[0] = Sphere.Dummy;
+            t.InitSphere(dummy, 1.0f);
+        }
+    }
+
+    // retail: CPhysicsObj::AdjustPosition (acclient.c:319116); indoor branch without the outdoor fallback
+    private static ObjCell? AdjustPosition(RetailSweep sweep, ref Position p, Vector3 spherePoint)
+    {
+        uint low = p.ObjCellId & 0xFFFF;
+        if (!((low >= 1 && low <= 0x40) || (low >= 0x100 && low <= 0xFFFD) || low == 0xFFFF))
+        {
+            return null;
+        }
+
+        if (low >= LandDefs.FirstEnvCell)
+        {
+            // Indoor: the cell itself or a neighbour that contains the first sphere's centre. Retail (bSearchCells = 1)
+            // searches the cell's stab list of visible cells; we search its portal neighbours, and retail's fallback to
+            // the outdoors for cells seen from outside is not ported (docs/divergences.md, "Indoor SetPosition").
+            if (sweep.Cells.GetVisible(p.ObjCellId) is not EnvCell env)
+            {
+                return null;
+            }
+
+            EnvCell? child = env.FindVisibleChildCell(sweep.Cells, p.LocalToGlobal(p, spherePoint));
+            if (child is not null)
+            {
+                p.ObjCellId = child.CellId;
+            }
+
+            return child;
+        }
+
+        LandDefs.AdjustToOutside(ref p.ObjCellId, ref p.Frame.Origin);
+        return p.ObjCellId != 0 ? sweep.Cells.GetVisible(p.ObjCellId) : null;
+    }
+
+    /// <summary>
+    /// Places the transition's spheres at <paramref name="p"/>: without SLIDE the placement must end within 5 cm (in x and y,
+    /// signed as retail compares) of the request and in the same cell, and then takes the placed origin.
+    /// </summary>
+    // retail: CPhysicsObj::CheckPositionInternal (acclient.c:319172)
+    private static bool CheckPositionInternal(ObjCell cell, ref Position p, Transition t, SetPositionFlags flags)
+    {
+        t.InitPlacementPath(cell, p);
+        bool slide = (flags & SetPositionFlags.Slide) != 0;
+        if (!slide)
+        {
+            t.SpherePath.PlacementAllowsSliding = false;
+        }
+
+        if (!t.FindValidPosition())
+        {
+            return false;
+        }
+
+        if (slide)
+        {
+            return true;
+        }
+
+        Position curr = t.SpherePath.CurrPos;
+        if (curr.Frame.Origin.X - p.Frame.Origin.X < RetailSweep.PlacementTolerance
+            && curr.Frame.Origin.Y - p.Frame.Origin.Y < RetailSweep.PlacementTolerance
+            && curr.ObjCellId == cell.Id)
+        {
+            p.Frame.Origin = curr.Frame.Origin;
+            return true;
+        }
+
+        return false;
+    }
+}
