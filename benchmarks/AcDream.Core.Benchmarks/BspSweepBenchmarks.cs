@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
-using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;

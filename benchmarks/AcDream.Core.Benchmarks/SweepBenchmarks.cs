@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;

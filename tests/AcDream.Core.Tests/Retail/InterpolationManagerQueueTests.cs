@@ -49,7 +49,7 @@ public class InterpolationManagerQueueTests
     [Fact]
     public void InterpolateTo_SeveralTailNodesWithinDesiredDistance_AllCollapseIntoTheNewTarget()
     {
-        // Bug list #5: a loop, not a single compare. B (2.00) and C (2.06) are 0.06 m apart so both are kept; D (2.03) is
+        // Retail walks the tail in a loop, not a single compare. B (2.00) and C (2.06) are 0.06 m apart so both are kept; D (2.03) is
         // 0.03 m from C and 0.03 m from B: both go; A (1.00) is 1.03 m away and stops the walk.
         var s = new ManagerScene(Start);
         PositionManager pm = s.Managers;
@@ -79,7 +79,7 @@ public class InterpolationManagerQueueTests
     [Fact]
     public void InterpolateTo_TwentyFiveNearUpdates_KeepsTheNewestTwentyEvictingAtTheHead()
     {
-        // Bug list #6: while count >= 20 pop the head, then append. Updates at 51, 51.5, ..., 63 m: the first five go.
+        // Retail: while count >= 20 pop the head, then append. Updates at 51, 51.5, ..., 63 m: the first five go.
         var s = new ManagerScene(Start);
         for (int i = 0; i < 25; i++)
         {
@@ -95,7 +95,7 @@ public class InterpolationManagerQueueTests
     [Fact]
     public void InterpolateTo_FartherThanAutonomyBlipDistance_AppendsAndPrearmsFailCounterToFour()
     {
-        // Bug list #3: 150 m > 100 m outdoors (GetAutonomyBlipDistance, acclient.c:315860).
+        // 150 m > 100 m outdoors (GetAutonomyBlipDistance, acclient.c:315860).
         var s = new ManagerScene(Start);
         s.Managers.InterpolateTo(North(1f), false);
         s.Managers.InterpolateTo(North(150f), false);

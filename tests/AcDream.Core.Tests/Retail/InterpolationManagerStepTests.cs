@@ -134,7 +134,7 @@ public class InterpolationManagerStepTests
     [Fact]
     public void AdjustOffset_ProgressQuantumIsTheSumOfQuanta()
     {
-        // Bug list #1 (acclient.c:389242): progress_quantum(float) = quantum + progress_quantum, per call.
+        // acclient.c:389242: progress_quantum(float) = quantum + progress_quantum, per call.
         var s = new ManagerScene(Start);
         s.Managers.InterpolateTo(North(10f), false);
         InterpolationManager im = s.Interpolation!;
@@ -165,7 +165,7 @@ public class InterpolationManagerStepTests
     }
 
     [Theory]
-    // Bug list #4: pass when progress / progress_quantum / my_max_speed >= 0.3 (dimensionless).
+    // pass when progress / progress_quantum / my_max_speed >= 0.3 (dimensionless).
     // 1.3 m in 5 x 0.1 s at 8 m/s: 1.3 / 0.5 / 8 = 0.325 -> pass. 1.1 m: 0.275 -> fail.
     // (The reference's "progress / progress_quantum / dt" would give 26 and 22: both pass.)
     [InlineData(1.3f, true)]
@@ -203,7 +203,7 @@ public class InterpolationManagerStepTests
     [Fact]
     public void Audit_NoProgressButWithinPointTwoMetres_CompletesAsSuccess()
     {
-        // Spec correction #7 (acclient.c:389270): curr_distance 0.15 < 0.2 -> NodeCompleted(1), no fail count.
+        // acclient.c:389270: curr_distance 0.15 < 0.2 -> NodeCompleted(1), no fail count.
         var s = new ManagerScene(Start);
         s.Managers.InterpolateTo(North(0.15f), false);
         InterpolationManager im = s.Interpolation!;

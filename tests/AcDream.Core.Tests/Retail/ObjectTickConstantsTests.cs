@@ -29,7 +29,7 @@ public class ObjectTickConstantsTests
         Assert.Equal(0x20000u, (uint)PhysicsState.Inelastic);
         Assert.Equal(0x400000u, (uint)PhysicsState.EdgeSlide);
         Assert.Equal(0x800000u, (uint)PhysicsState.Sledding);
-        // Correction #4: the bit tested first in update_object (0x1000000) is FROZEN, not hidden.
+        // The bit tested first in update_object (0x1000000) is FROZEN, not hidden.
         Assert.Equal(0x1000000u, (uint)PhysicsState.Frozen);
     }
 

@@ -14,7 +14,7 @@ public class PhysicsGlobalsTests
     [Fact]
     public void Epsilon_IsRetailFloat0Point0002_Bits3951B717()
     {
-        // Spec correction #1: 0.0002f is 0x3951B717 (the founding reference's 0x3949A18A is 0.000192f).
+        // acclient.c: 0.0002f is 0x3951B717; 0x3949A18A, sometimes quoted for it, is 0.000192f.
         Assert.Equal(0x3951B717, Bits(PhysicsGlobals.Epsilon));
         Assert.NotEqual(0x3949A18A, Bits(PhysicsGlobals.Epsilon));
     }

@@ -56,7 +56,7 @@ public class ActivityGateTests
     public void ObjectBeyond96m_IsKeptActive_WhenObjectMaintenanceIsOff()
     {
         var (world, _) = WorldWithPlayer();
-        world.ObjectMaintenanceActive = false; // correction #5: the gate applies only while obj_maint is active
+        world.ObjectMaintenanceActive = false; // the gate applies only while obj_maint is active (acclient.c:323080)
         PhysicsObj far = Mover(world, new Vector3(110f, 10f, 0f));
         Assert.True(world.Tick(Q));
         Assert.True(far.IsActive);

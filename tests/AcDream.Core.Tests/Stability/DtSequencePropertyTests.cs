@@ -15,7 +15,7 @@ namespace AcDream.Core.Tests.Stability;
 
 /// <summary>
 /// Property-based (FsCheck) invariants over random sequences of frame times: every update_object call obeys retail's slicing
-/// rules (acclient.c:323080; spec correction 3), nothing becomes NaN, and a resting object never moves.
+/// rules (acclient.c:323080), nothing becomes NaN, and a resting object never moves.
 /// </summary>
 public class DtSequencePropertyTests
 {

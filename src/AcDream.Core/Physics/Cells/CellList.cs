@@ -89,7 +89,7 @@ internal static class CellList
             }
         }
 
-        // Retail's do_not_load_cells pruning applies to interior positions only (issue 6).
+        // Retail's do_not_load_cells pruning applies to interior positions only.
         return curr;
     }
 

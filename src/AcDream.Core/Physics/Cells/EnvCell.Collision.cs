@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Collision.Bsp;
 
 namespace AcDream.Core.Physics.Cells;
 
-/// <summary>The indoor cell as a collision cell of the sweep.</summary>
+// The indoor cell as a collision cell of the sweep.
 public sealed partial class EnvCell
 {
     /// <summary>The cell's walls and floors, then the objects in it (object shadows: a later part of the port).</summary>

@@ -8,7 +8,7 @@ using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Cells;
 
-/// <summary>Which cells a sphere reaches from an indoor cell, through its portals.</summary>
+// Which cells a sphere reaches from an indoor cell, through its portals.
 public sealed partial class EnvCell
 {
     /// <summary>

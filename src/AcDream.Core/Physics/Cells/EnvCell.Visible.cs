@@ -3,7 +3,7 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics.Cells;
 
-/// <summary>Finding the indoor cell that contains a point, from a starting cell.</summary>
+// Finding the indoor cell that contains a point, from a starting cell.
 public sealed partial class EnvCell
 {
     /// <summary>

@@ -8,7 +8,7 @@ using AcDream.Core.Physics.Terrain;
 
 namespace AcDream.Core.Physics.Cells;
 
-/// <summary>The land cell as a collision cell of the sweep (retail's <c>CLandCell</c> virtual functions).</summary>
+// The land cell as a collision cell of the sweep (retail's CLandCell virtual functions).
 public sealed partial class LandCell : ObjCell
 {
     /// <summary>

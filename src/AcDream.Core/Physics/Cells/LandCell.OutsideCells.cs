@@ -4,11 +4,9 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Cells;
 
-/// <summary>
-/// Gathering the outdoor cells a set of spheres touches (the outdoor half of retail's cell list), into a caller-owned
-/// buffer of cell ids with retail's <c>CELLARRAY::add_cell</c> semantics: an id is appended only when absent, so the
-/// order is insertion order.
-/// </summary>
+// Gathering the outdoor cells a set of spheres touches (the outdoor half of retail's cell list), into a caller-owned
+// buffer of cell ids with retail's CELLARRAY::add_cell semantics: an id is appended only when absent, so the order is
+// insertion order.
 public sealed partial class LandCell
 {
     /// <summary>

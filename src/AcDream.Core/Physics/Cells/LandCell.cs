@@ -1,9 +1,9 @@
 using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
+using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Terrain;
-using AcDream.Core.Physics.Collision;
 
 namespace AcDream.Core.Physics.Cells;
 

@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.Cells;
 
-/// <summary>The cell's list of object shadows: the objects a sweep through the cell must test.</summary>
+// The cell's list of object shadows: the objects a sweep through the cell must test.
 public abstract partial class ObjCell
 {
     // Allocated with the cell (one growth step), so that the first objects to walk in do not allocate inside a tick.

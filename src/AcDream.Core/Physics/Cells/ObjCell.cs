@@ -10,7 +10,7 @@ namespace AcDream.Core.Physics.Cells;
 /// A cell of the world as the sweep sees it: something that can be asked for collisions with a transition, can list
 /// the further cells a sphere reaches through it, and can tell whether a point lies in it. Retail: <c>CObjCell</c>
 /// (acclient.h:30915, PORTAL/ccell/CObjCell.c) and its virtual table. Kinds: <see cref="LandCell"/> (outdoor terrain, with
-/// its building) and <see cref="EnvCell"/> (indoor cells); object shadows arrive with the object half of issue 6.
+/// its building) and <see cref="EnvCell"/> (indoor cells). Each cell also lists the shadows of the objects that overlap it.
 /// </summary>
 public abstract partial class ObjCell
 {

@@ -3,7 +3,7 @@ using AcDream.Core.Physics.Objects.Seams;
 
 namespace AcDream.Core.Physics.Collision;
 
-/// <summary>The moving object's object-collision rules.</summary>
+// The moving object's object-collision rules.
 internal sealed partial class ObjectInfo
 {
     // retail: OBJECTINFO::init (acclient.c:314117), the weenie part: IS_IMPENETRABLE, IS_PLAYER, IS_PK, IS_PKLITE.

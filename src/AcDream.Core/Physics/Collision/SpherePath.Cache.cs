@@ -150,7 +150,7 @@ internal sealed partial class SpherePath
     // retail: SPHEREPATH::set_walkable_check_pos (acclient.c:311550)
     public void SetWalkableCheckPos(in Sphere sphere) => WalkableCheckPos = sphere;
 
-    /// <summary>Records the walkable polygon a BSP found under the sphere (issue 6).</summary>
+    /// <summary>Records the walkable polygon a BSP found under the sphere.</summary>
     // retail: SPHEREPATH::set_walkable (acclient.c:361093)
     public void SetWalkable(in Sphere sphere, Polygon poly, Vector3 zAxis, in Position localPos, float scale)
     {

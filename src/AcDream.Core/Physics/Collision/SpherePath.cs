@@ -113,13 +113,13 @@ internal sealed partial class SpherePath
     /// <summary>Saved <see cref="CheckPos"/>. Retail: <c>backup_check_pos</c>.</summary>
     public Position BackupCheckPos;
 
-    /// <summary>Retail: <c>obstruction_ethereal</c> (object collisions, issue 6).</summary>
+    /// <summary>Retail: <c>obstruction_ethereal</c> (object collisions).</summary>
     public bool ObstructionEthereal;
 
     /// <summary>The cell list reached an interior (env) cell. Retail: <c>hits_interior_cell</c>.</summary>
     public bool HitsInteriorCell;
 
-    /// <summary>Retail: <c>bldg_check</c> (buildings, issue 6).</summary>
+    /// <summary>Retail: <c>bldg_check</c> (buildings).</summary>
     public bool BldgCheck;
 
     /// <summary>The smallest normal Z a walkable surface needs during this step. Retail: <c>walkable_allowance</c>.</summary>

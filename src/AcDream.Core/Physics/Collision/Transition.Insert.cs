@@ -143,7 +143,7 @@ internal sealed partial class Transition
     }
 
     /// <summary>
-    /// The collide branch of <see cref="TransitionalInsert"/>: a BSP asked for a step-up check (issue 6). On walkable ground
+    /// The collide branch of <see cref="TransitionalInsert"/>: a BSP asked for a step-up check. On walkable ground
     /// the position is confirmed as a placement; otherwise the check position is restored and the step collides.
     /// </summary>
     // retail: CTransition::transitional_insert (acclient.c:312833), sphere_path.collide branch

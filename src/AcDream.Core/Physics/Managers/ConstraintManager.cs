@@ -54,7 +54,7 @@ public sealed class ConstraintManager
     /// <param name="offset">The substep's offset frame.</param>
     /// <param name="quantum">Substep duration, seconds (unused, as in retail).</param>
     // retail: ConstraintManager::adjust_offset (acclient.c:389477)
-    public void AdjustOffset(ref Frame offset, double quantum)
+    internal void AdjustOffset(ref Frame offset, double quantum)
     {
         if (!IsConstrained)
         {
@@ -85,7 +85,7 @@ public sealed class ConstraintManager
     /// <summary>End-of-substep work: none.</summary>
     /// <remarks>Retail's <c>ConstraintManager::UseTime</c> (symbol at 0x694750) is folded by the linker into a shared empty
     /// function; PositionManager::UseTime still calls it between the interpolation and sticky managers.</remarks>
-    public void UseTime()
+    internal void UseTime()
     {
     }
 

@@ -19,7 +19,7 @@ public sealed partial class InterpolationManager
     /// <param name="quantum">Substep duration, seconds.</param>
     /// <exception cref="System.ArgumentException"><paramref name="quantum"/> is NaN or infinite (state unchanged).</exception>
     // retail: InterpolationManager::adjust_offset (acclient.c:389177)
-    public void AdjustOffset(ref Frame offset, double quantum)
+    internal void AdjustOffset(ref Frame offset, double quantum)
     {
         if (!double.IsFinite(quantum))
         {
@@ -126,7 +126,7 @@ public sealed partial class InterpolationManager
     /// velocity and completes, and a Jump head completes.
     /// </summary>
     // retail: InterpolationManager::UseTime (acclient.c:389277)
-    public void UseTime()
+    internal void UseTime()
     {
         PhysicsObj obj = PhysicsObj;
         int fails = NodeFailCounter;

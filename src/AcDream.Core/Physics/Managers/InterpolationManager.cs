@@ -110,7 +110,7 @@ public sealed partial class InterpolationManager
 
     /// <summary>The queued node at <paramref name="index"/> (0 = head, the node being approached).</summary>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="index"/> is outside [0, <see cref="Count"/>).</exception>
-    public InterpolationNode GetNode(int index)
+    internal InterpolationNode GetNode(int index)
     {
         if ((uint)index >= (uint)_count)
         {
@@ -148,7 +148,7 @@ public sealed partial class InterpolationManager
     /// <param name="keepHeading">Keep the object's current heading.</param>
     /// <param name="currentBodyPosition">The body's position to measure from, or null for the object's own.</param>
     /// <exception cref="ArgumentException">A position has a non-finite origin or an invalid quaternion; nothing changes.</exception>
-    public void Enqueue(in Position p, bool keepHeading = false, Position? currentBodyPosition = null)
+    internal void Enqueue(in Position p, bool keepHeading = false, Position? currentBodyPosition = null)
     {
         PhysicsObj.Touch();
         ThrowIfUnusable(p, nameof(p));
@@ -173,7 +173,7 @@ public sealed partial class InterpolationManager
     /// <param name="velocity">Node velocity, m/s.</param>
     /// <param name="extent">Jump extent (carried only).</param>
     /// <exception cref="ArgumentException">Unknown type, unusable position or non-finite velocity/extent; nothing changes.</exception>
-    public void EnqueueNode(InterpolationNodeType type, in Position p, Vector3 velocity, float extent = 0f)
+    internal void EnqueueNode(InterpolationNodeType type, in Position p, Vector3 velocity, float extent = 0f)
     {
         PhysicsObj.Touch();
         if (type is not (InterpolationNodeType.Position or InterpolationNodeType.Jump or InterpolationNodeType.Velocity))

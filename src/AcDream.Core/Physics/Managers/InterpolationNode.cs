@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Math;
 namespace AcDream.Core.Physics.Managers;
 
 /// <summary>Kind of an <see cref="InterpolationNode"/> (retail <c>InterpolationNode::type</c>, acclient.h:58208).</summary>
-public enum InterpolationNodeType : uint
+internal enum InterpolationNodeType : uint
 {
     /// <summary>No node (retail's constructor value); never queued.</summary>
     None = 0,
@@ -23,7 +23,7 @@ public enum InterpolationNodeType : uint
 /// One queued target of the <see cref="InterpolationManager"/> (retail <c>InterpolationNode</c>, acclient.h:58208, 0x60 bytes):
 /// a type, a position, a velocity and a jump extent. Stored by value in the manager's fixed ring.
 /// </summary>
-public struct InterpolationNode
+internal struct InterpolationNode
 {
     /// <summary>What the node asks for (retail <c>type</c>).</summary>
     public InterpolationNodeType Type;

@@ -40,7 +40,7 @@ public sealed class PositionManager
     /// <param name="offset">The substep's offset frame (animation root motion on entry).</param>
     /// <param name="quantum">Substep duration, seconds.</param>
     // retail: PositionManager::adjust_offset (acclient.c:388286)
-    public void AdjustOffset(ref Frame offset, double quantum)
+    internal void AdjustOffset(ref Frame offset, double quantum)
     {
         InterpolationManager?.AdjustOffset(ref offset, quantum);
         StickyManager?.AdjustOffset(ref offset, quantum);
@@ -49,7 +49,7 @@ public sealed class PositionManager
 
     /// <summary>End-of-step work, in the order interpolation, constraint, sticky.</summary>
     // retail: PositionManager::UseTime (acclient.c:388266)
-    public void UseTime()
+    internal void UseTime()
     {
         InterpolationManager?.UseTime();
         ConstraintManager?.UseTime();

@@ -71,7 +71,7 @@ public sealed class StickyManager
     /// <param name="offset">The substep's offset frame.</param>
     /// <param name="quantum">Substep duration, seconds.</param>
     // retail: StickyManager::adjust_offset (acclient.c:388518)
-    public void AdjustOffset(ref Frame offset, double quantum)
+    internal void AdjustOffset(ref Frame offset, double quantum)
     {
         if (TargetId == 0 || !Initialized)
         {
@@ -145,7 +145,7 @@ public sealed class StickyManager
 
     /// <summary>Drops the stick once the client time passes <see cref="StickyTimeoutTime"/>.</summary>
     // retail: StickyManager::UseTime (acclient.c:388604)
-    public void UseTime()
+    internal void UseTime()
     {
         if (TargetId != 0 && PhysicsObj.World.CurrentTime > StickyTimeoutTime)
         {

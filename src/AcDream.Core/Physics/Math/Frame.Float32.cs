@@ -2,10 +2,8 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics.Math;
 
-/// <summary>
-/// Plain-float32 variants of the Frame operations the tick uses most, for the <see cref="ArithmeticMode.Float32"/> fidelity switch.
-/// Same formulas and operand order as the retail versions, but every product and sum rounds to float.
-/// </summary>
+// Plain-float32 variants of the Frame operations the tick uses most, for the ArithmeticMode.Float32 fidelity switch.
+// Same formulas and operand order as the retail versions, but every product and sum rounds to float.
 public partial struct Frame
 {
     /// <summary>Float32 variant of <see cref="Cache"/>.</summary>

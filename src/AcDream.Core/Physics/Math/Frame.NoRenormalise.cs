@@ -1,14 +1,11 @@
 using System.Numerics;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Math;
 
-/// <summary>
-/// Rotation updates that skip <c>set_rotate</c>'s normalisation, for the <see cref="PhysicsProfile.RenormaliseEvery"/> fidelity
-/// switch. NOT retail: retail renormalises on every rotation change. The product is stored as is (its norm drifts by
-/// rounding) and the cached matrix is rebuilt from it, so a drifted quaternion scales every local-to-global vector by its
-/// squared norm.
-/// </summary>
+// Rotation updates that skip set_rotate's normalisation, for the PhysicsProfile.RenormaliseEvery fidelity switch. NOT
+// retail: retail renormalises on every rotation change. The product is stored as is (its norm drifts by rounding) and
+// the cached matrix is rebuilt from it, so a drifted quaternion scales every local-to-global vector by its squared
+// norm.
 public partial struct Frame
 {
     /// <summary>

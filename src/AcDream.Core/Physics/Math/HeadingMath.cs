@@ -3,7 +3,7 @@ namespace AcDream.Core.Physics.Math;
 /// <summary>
 /// Retail's compass-heading arithmetic: degrees clockwise from north (+Y), in [0, 360).
 /// </summary>
-public static class HeadingMath
+internal static class HeadingMath
 {
     /// <summary>Degrees per radian as retail's literal (57.29577951308232).</summary>
     public const double RadToDeg = 57.29577951308232;

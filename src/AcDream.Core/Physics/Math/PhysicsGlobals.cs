@@ -16,7 +16,7 @@ public static class PhysicsGlobals
     /// <summary>
     /// Retail's general "essentially zero" tolerance (seconds, metres or unitless, by context).
     /// Retail: float 0.0002f, bits 0x3951B717 (printed by the decompiler as 0.00019999999).
-    /// Note: the founding reference's 0x3949A18A is 0.000192f and is wrong.
+    /// (0x3949A18A, sometimes quoted for it, is 0.000192f.)
     /// </summary>
     public const float Epsilon = 0.0002f;
 

@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics.Math;
 /// Retail's small vector helpers (<c>AC1Legacy::Vector3</c>), written component by component in retail's order with
 /// double intermediates, so that no fused multiply-add can change a result.
 /// </summary>
-public static class VectorMath
+internal static class VectorMath
 {
     /// <summary>True when no component is NaN or infinite.</summary>
     public static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);

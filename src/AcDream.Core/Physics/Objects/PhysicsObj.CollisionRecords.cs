@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>The object's collision table: the objects it is touching, for once-per-contact reports.</summary>
+// The object's collision table: the objects it is touching, for once-per-contact reports.
 public sealed partial class PhysicsObj
 {
     private CollisionRecord[] _collisionTable = Array.Empty<CollisionRecord>();

@@ -5,8 +5,8 @@ using AcDream.Core.Physics.Collision.Sweep;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>The object's collision response after a retail sweep: the bounce, the stationary bits and the collision reports
-/// to the listeners of the <see cref="RetailSweep"/>.</summary>
+// The object's collision response after a retail sweep: the bounce, the stationary bits and the collision reports to
+// the listeners of the RetailSweep.
 public sealed partial class PhysicsObj
 {
     private const TransientState StationaryBits =

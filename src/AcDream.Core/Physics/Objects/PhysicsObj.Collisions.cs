@@ -5,7 +5,7 @@ using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>The object's side of the collision sweep: its sweep flags and its collision response.</summary>
+// The object's side of the collision sweep: its sweep flags and its collision response.
 public sealed partial class PhysicsObj
 {
     /// <summary>The object is in an ongoing collision with the environment (reported once until it ends). Retail:

@@ -4,11 +4,9 @@ using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>
-/// The tick's fidelity switches (<see cref="PhysicsProfile.Arithmetic"/>, <see cref="PhysicsProfile.RenormaliseEvery"/>):
-/// the retail path is taken whenever the switches have their defaults; the other paths are NOT retail and exist to be
-/// measured (docs/accuracy-vs-cost.md).
-/// </summary>
+// The tick's fidelity switches (PhysicsProfile.Arithmetic, PhysicsProfile.RenormaliseEvery): the retail path is taken
+// whenever the switches have their defaults; the other paths are NOT retail and exist to be measured
+// (docs/accuracy-vs-cost.md).
 public sealed partial class PhysicsObj
 {
     private int _rotationChanges;

@@ -89,7 +89,7 @@ public sealed partial class PhysicsObj
     /// <summary>Applies one interpolated hook value to the object or its parts.</summary>
     /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     // retail: CPhysicsObj::process_fp_hook (acclient.c:320571)
-    public void ProcessFPHook(PhysicsHookType type, float value, uint userData)
+    internal void ProcessFPHook(PhysicsHookType type, float value, uint userData)
     {
         Touch();
         ThrowIfNotFinite(value, 0.0);
@@ -192,7 +192,7 @@ public sealed partial class PhysicsObj
     /// <summary>Sets the translucency at once, never below <see cref="TranslucencyOriginal"/>.</summary>
     /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
     // retail: CPhysicsObj::SetTranslucencyInternal (acclient.c:316802)
-    public void SetTranslucencyInternal(float translucency)
+    internal void SetTranslucencyInternal(float translucency)
     {
         Touch();
         ThrowIfNotFinite(translucency, 0.0);

@@ -9,7 +9,7 @@ using AcDream.Core.Physics.Objects.Seams;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>The object as an obstacle: how a transition of another object collides with it.</summary>
+// The object as an obstacle: how a transition of another object collides with it.
 public sealed partial class PhysicsObj
 {
     /// <summary>The game object's answers (creature, player, PK...), or null for a plain physics object. Retail:
@@ -169,7 +169,7 @@ public sealed partial class PhysicsObj
     /// spheres). A static object never reports; false when no transition is free or the world has no retail sweep.
     /// </summary>
     // retail: CPhysicsObj::check_collision (acclient.c:320127)
-    public bool CheckCollision(PhysicsObj mover)
+    internal bool CheckCollision(PhysicsObj mover)
     {
         ArgumentNullException.ThrowIfNull(mover);
         if ((_state & PhysicsState.Static) != 0 || World.Sweep is not RetailSweep retail)

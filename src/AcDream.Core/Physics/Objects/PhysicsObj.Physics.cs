@@ -93,7 +93,7 @@ public sealed partial class PhysicsObj
     /// gravity when the GRAVITY bit is set, otherwise zero.
     /// </summary>
     // retail: CPhysicsObj::calc_acceleration (acclient.c:317786)
-    public void CalcAcceleration()
+    internal void CalcAcceleration()
     {
         Touch();
         TransientState ts = _transientState;

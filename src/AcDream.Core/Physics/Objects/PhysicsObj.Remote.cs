@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>The remote-object update path and the sticky/target entry points of the position managers (issue 4).</summary>
+// The remote-object update path and the sticky/target entry points of the position managers.
 public sealed partial class PhysicsObj
 {
     /// <summary>

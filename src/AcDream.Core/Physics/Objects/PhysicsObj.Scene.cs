@@ -2,11 +2,8 @@ using AcDream.Core.Physics.Scene;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>
-/// What the object keeps for the scene (<see cref="SceneTicker"/>): its slot, the wake, and the lazily evaluated bookkeeping
-/// behind <see cref="UpdateTime"/>, <see cref="PlayerVector"/>, <see cref="PlayerDistance"/> and <see cref="TransientState"/>.
-/// Not retail.
-/// </summary>
+// What the object keeps for the scene (SceneTicker): its slot, the wake, and the lazily evaluated bookkeeping behind
+// UpdateTime, PlayerVector, PlayerDistance and TransientState. Not retail.
 public sealed partial class PhysicsObj
 {
     /// <summary>The scene's record of this object (dormancy, visiting list, gate queue) and the retail fields it evaluates lazily.</summary>

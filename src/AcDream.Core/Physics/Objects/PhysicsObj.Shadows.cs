@@ -8,7 +8,7 @@ using AcDream.Core.Physics.Objects.Parts;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>The object's shadows: its entries in the shadow lists of every cell it overlaps.</summary>
+// The object's shadows: its entries in the shadow lists of every cell it overlaps.
 public sealed partial class PhysicsObj
 {
     private ShadowObj[] _shadowObjects = Array.Empty<ShadowObj>();

@@ -4,10 +4,8 @@ using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>
-/// The non-retail remote-smoothing modes of <see cref="PhysicsProfile.RemoteSmoothing"/>: snapping to each report and plain
-/// linear extrapolation. Under the retail default none of this runs.
-/// </summary>
+// The non-retail remote-smoothing modes of PhysicsProfile.RemoteSmoothing: snapping to each report and plain linear
+// extrapolation. Under the retail default none of this runs.
 public sealed partial class PhysicsObj
 {
     private Position _lastReport;

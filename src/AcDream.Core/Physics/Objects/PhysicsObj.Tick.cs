@@ -16,7 +16,7 @@ public sealed partial class PhysicsObj
     /// <see cref="PhysicsWorld.SetCurrentTime"/>.
     /// </summary>
     // retail: CPhysicsObj::update_object (acclient.c:323080)
-    public void UpdateObject()
+    internal void UpdateObject()
     {
         // non-retail: a direct call on a dormant object wakes it first, so that it reads and keeps retail's bookkeeping (the
         // scene visits only awake objects, for which this does nothing)

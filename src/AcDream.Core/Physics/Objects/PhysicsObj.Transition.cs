@@ -9,7 +9,7 @@ using AcDream.Core.Physics.Objects.Parts;
 
 namespace AcDream.Core.Physics.Objects;
 
-/// <summary>The object's retail sweep and placement: the pooled transition that moves it, and the placement that sets it down.</summary>
+// The object's retail sweep and placement: the pooled transition that moves it, and the placement that sets it down.
 public sealed partial class PhysicsObj
 {
     /// <summary>

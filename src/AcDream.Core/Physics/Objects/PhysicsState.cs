@@ -84,6 +84,6 @@ public enum PhysicsState : uint
     /// <summary>SLEDDING_PS: sledding friction and velocity heading (the decompilation prints this mask as a string address).</summary>
     Sledding = 0x800000,
 
-    /// <summary>FROZEN_PS: update_object does nothing (the founding reference's "hidden" bit).</summary>
+    /// <summary>FROZEN_PS: update_object does nothing (not HIDDEN_PS, which is 0x4000).</summary>
     Frozen = 0x1000000,
 }

@@ -6,7 +6,7 @@ using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Scene;
 
-/// <summary>The dormant objects' bookkeeping: which kind of dormancy an object can take, and the values retail would hold.</summary>
+// The dormant objects' bookkeeping: which kind of dormancy an object can take, and the values retail would hold.
 internal sealed partial class SceneTicker
 {
     /// <summary>ACTIVE after the last (or the previous) tick for a ping-pong object put to sleep after tick <paramref name="sleepTick"/>.</summary>

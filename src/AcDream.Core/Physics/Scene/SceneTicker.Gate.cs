@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.Scene;
 
-/// <summary>The 96 m player gate of the dormant objects, and putting idle objects to sleep.</summary>
+// The 96 m player gate of the dormant objects, and putting idle objects to sleep.
 internal sealed partial class SceneTicker
 {
     // Objects ordered before the player see its position before its update; those after, after it: one queue each, so each

@@ -3,7 +3,7 @@ using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.Scene;
 
-/// <summary>The visiting list (the awake objects, in the world's order) and the wakes.</summary>
+// The visiting list (the awake objects, in the world's order) and the wakes.
 internal sealed partial class SceneTicker
 {
     private PhysicsObj[] _active = new PhysicsObj[16];

@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Terrain;
 
-/// <summary>Building the terrain: vertices, the split rule, triangles, cells and water.</summary>
+// Building the terrain: vertices, the split rule, triangles, cells and water.
 public sealed partial class LandBlock
 {
     // Retail's split multipliers (acclient.c:354000), applied in wrapping 32-bit integer arithmetic.

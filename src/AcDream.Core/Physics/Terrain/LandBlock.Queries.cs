@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Terrain;
 
-/// <summary>Per-point terrain queries: water depth and terrain type by nearest corner.</summary>
+// Per-point terrain queries: water depth and terrain type by nearest corner.
 public sealed partial class LandBlock
 {
     /// <summary>Water depth, in metres, in a partly-water cell whose nearest corner is water. Retail: 0.44999999 (0.45f).</summary>

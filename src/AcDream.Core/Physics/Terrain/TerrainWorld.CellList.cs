@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Terrain;
 
-/// <summary>The cell list of a set of spheres over the outdoor world.</summary>
+// The cell list of a set of spheres over the outdoor world.
 public sealed partial class TerrainWorld
 {
     /// <summary>

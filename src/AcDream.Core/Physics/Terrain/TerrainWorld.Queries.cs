@@ -7,7 +7,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Terrain;
 
-/// <summary>Point queries for clients: the triangle, height and water under a position.</summary>
+// Point queries for clients: the triangle, height and water under a position.
 public sealed partial class TerrainWorld
 {
     /// <summary>The world's side, in metres: 255 landblocks × 192 m = 48,960 m.</summary>

@@ -3,10 +3,8 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.World;
 
-/// <summary>
-/// The fidelity switches of a profile. Each default is retail; every other value is a deliberate, documented divergence
-/// (docs/divergences.md) whose error and cost are measured in docs/accuracy-vs-cost.md.
-/// </summary>
+// The fidelity switches of a profile. Each default is retail; every other value is a deliberate, documented divergence
+// (docs/divergences.md) whose error and cost are measured in docs/accuracy-vs-cost.md.
 public sealed partial class PhysicsProfile
 {
     /// <summary>

@@ -2,10 +2,8 @@ using AcDream.Core.Physics.Scene;
 
 namespace AcDream.Core.Physics.World;
 
-/// <summary>
-/// The scene's entry points: which effects a world simulates and whether dormant objects are skipped. The scene itself (which
-/// objects a tick visits, dormancy, the 96 m gate) is <see cref="SceneTicker"/>.
-/// </summary>
+// The scene's entry points: which effects a world simulates and whether dormant objects are skipped. The scene itself
+// (which objects a tick visits, dormancy, the 96 m gate) is SceneTicker.
 public sealed partial class PhysicsWorld
 {
     /// <summary>The scene tick the world runs unless <see cref="VisitEveryObject"/>.</summary>

@@ -36,7 +36,7 @@ internal struct QuantumSlicer
         }
         else
         {
-            // One whole step when dt <= MaxQuantum, with no MinQuantum test (the founding reference's "nothing at 60 fps" is wrong).
+            // One whole step when dt <= MaxQuantum, with no MinQuantum test (acclient.c:323080), so a 60 fps frame does run a step.
             _state = _dt > _max ? 0 : 1;
             _wholeStep = _dt <= _max;
         }

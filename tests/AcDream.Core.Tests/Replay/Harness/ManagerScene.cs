@@ -4,7 +4,6 @@ using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Support;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 

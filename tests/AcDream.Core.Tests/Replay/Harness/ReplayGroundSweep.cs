@@ -2,7 +2,6 @@ using System.Numerics;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
-using AcDream.Core.Tests.Support;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 

@@ -18,7 +18,7 @@ public enum CellBspSphere
     Inside = 2,
 }
 
-/// <summary>The cell BSP tests: an indoor cell's region as a chain of planes through the positive children.</summary>
+// The cell BSP tests: an indoor cell's region as a chain of planes through the positive children.
 public sealed partial class BspTree
 {
     /// <summary>Margin added to the radius by the cell-region sphere test, metres. Retail: 0.0099999998 (acclient.c:362979).</summary>

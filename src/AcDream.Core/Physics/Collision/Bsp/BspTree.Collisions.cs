@@ -6,11 +6,9 @@ using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Collision.Bsp;
 
-/// <summary>
-/// The BSP as a collision body of the sweep: the entry points a cell or a physics part calls with the transition's
-/// spheres already in the tree's local space (the sphere path's <c>CacheLocalSpaceSphere</c>), and their helpers.
-/// Results go back to landblock space through the sphere path's <c>LocalSpacePos</c> and the owner's scale.
-/// </summary>
+// The BSP as a collision body of the sweep: the entry points a cell or a physics part calls with the transition's
+// spheres already in the tree's local space (the sphere path's CacheLocalSpaceSphere), and their helpers. Results go
+// back to landblock space through the sphere path's LocalSpacePos and the owner's scale.
 public sealed partial class BspTree
 {
     /// <summary>Most rounds of <see cref="PlacementInsert"/>. Retail: 20 (acclient.c:360778).</summary>

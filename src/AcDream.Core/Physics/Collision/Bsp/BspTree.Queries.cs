@@ -4,12 +4,10 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Collision.Bsp;
 
-/// <summary>The recursive sphere queries of the BSP (retail's virtual <c>BSPNODE</c> / <c>BSPLEAF</c> pairs).</summary>
-/// <remarks>
-/// A split node first rejects spheres that miss its bounding sphere, then descends into the positive child when the
-/// centre is at least <c>radius - EPSILON</c> in front of the plane, the negative child when at least that far behind,
-/// and both otherwise (retail's order). A missing child (index -1) behaves as an empty leaf.
-/// </remarks>
+// The recursive sphere queries of the BSP (retail's virtual BSPNODE / BSPLEAF pairs). A split node first rejects
+// spheres that miss its bounding sphere, then descends into the positive child when the centre is at least radius -
+// EPSILON in front of the plane, the negative child when at least that far behind, and both otherwise (retail's order).
+// A missing child (index -1) behaves as an empty leaf.
 public sealed partial class BspTree
 {
     /// <summary>

@@ -4,17 +4,14 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
-/// <summary>The sphere-against-polygon tests of the BSP queries (retail <c>CPolygon</c>, PORTAL/cgeometry/CPolygon.c).</summary>
-/// <remarks>
-/// <para>Every edge loop runs from the last vertex round to the first (edge <c>v[i-1] → v[i]</c>, starting with
-/// <c>v[n-1] → v[0]</c>); a point is inside an edge when <c>disp · (N × edge) ≥ 0</c>, i.e. to the left of the edge
-/// seen from the front of a counter-clockwise polygon.</para>
-/// <para>Retail ambiguity BSP-B1 (docs/divergences.md): after "outside this edge" the decompiler shows a flags-only
-/// compare (C0|C2) whose operands were lost. It is read as "outside this edge by more than the radius", i.e.
-/// <c>cross² &gt; radsq · |edge|²</c> (the distance from the edge line is <c>cross / |edge|</c> for a unit normal) → miss.
-/// This is the only reading that gives both this function and <c>polygon_hits_sphere_slow_but_sure</c> (which has no
-/// inside flag to test) a meaning; an outside point within the radius then goes on to the edge-segment and vertex tests.</para>
-/// </remarks>
+// The sphere-against-polygon tests of the BSP queries (retail CPolygon, PORTAL/cgeometry/CPolygon.c). Every edge loop
+// runs from the last vertex round to the first (edge v[i-1] → v[i], starting with v[n-1] → v[0]); a point is inside an
+// edge when disp · (N × edge) ≥ 0, i.e. to the left of the edge seen from the front of a counter-clockwise polygon.
+// Retail ambiguity BSP-B1 (docs/divergences.md): after "outside this edge" the decompiler shows a flags-only compare
+// (C0|C2) whose operands were lost. It is read as "outside this edge by more than the radius", i.e. cross² &gt; radsq ·
+// |edge|² (the distance from the edge line is cross / |edge| for a unit normal) → miss. This is the only reading that
+// gives both this function and polygon_hits_sphere_slow_but_sure (which has no inside flag to test) a meaning; an
+// outside point within the radius then goes on to the edge-segment and vertex tests.
 public sealed partial class Polygon
 {
     /// <summary>

@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
-/// <summary>The walkable-polygon queries of the sweep (used with BSP walkables, issue 6; terrain never sets one).</summary>
+// The walkable-polygon queries of the sweep (used with BSP walkables; terrain never sets one).
 public sealed partial class Polygon
 {
     /// <summary>
@@ -13,7 +13,7 @@ public sealed partial class Polygon
     /// </summary>
     /// <remarks>Retail ambiguity: after the inside-edge test fails, the decompiler shows a second flags-only test (C0|C2)
     /// that we read as the same "outside this edge" compare, so an outside centre returns false at once (the edge
-    /// projection test after it is then unreachable, as the flags say). Pinned for issue 6.</remarks>
+    /// projection test after it is then unreachable, as the flags say). Pinned by a test; see docs/divergences.md.</remarks>
     // retail: CPolygon::check_walkable (acclient.c:360226)
     public bool CheckWalkable(in Sphere sphere, Vector3 up)
     {

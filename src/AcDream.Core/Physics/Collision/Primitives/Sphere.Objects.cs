@@ -3,16 +3,12 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
-/// <summary>
-/// Another object's collision sphere against the moving spheres of a transition: overlap tests, landing on it, stepping
-/// up onto it, stepping down onto it, sliding along it, and the path-clipped missile's time of impact.
-/// Retail: <c>CSphere</c> (PORTAL/cgeometry/CSphere.c), the object-collision half.
-/// </summary>
-/// <remarks>
-/// Coordinates: <c>this</c> is the obstacle sphere already placed in the landblock of the transition's check position
-/// (see <see cref="IntersectsSphere(in Position, float, Transition, bool)"/>). Arithmetic follows the decompilation:
-/// x87 temporaries in double, values stored to float locals or fields rounded at that point.
-/// </remarks>
+// Another object's collision sphere against the moving spheres of a transition: overlap tests, landing on it, stepping
+// up onto it, stepping down onto it, sliding along it, and the path-clipped missile's time of impact. Retail: CSphere
+// (PORTAL/cgeometry/CSphere.c), the object-collision half. Coordinates: this is the obstacle sphere already placed in
+// the landblock of the transition's check position (see IntersectsSphere(in Position, float, Transition, bool)).
+// Arithmetic follows the decompilation: x87 temporaries in double, values stored to float locals or fields rounded at
+// that point.
 public partial struct Sphere
 {
     // EPSILON as the x87 code loads it (the float 0.0002f widened: the decompilation prints 0.00019999999).

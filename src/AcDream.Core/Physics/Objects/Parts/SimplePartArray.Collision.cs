@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Math;
 
 namespace AcDream.Core.Physics.Objects.Parts;
 
-/// <summary>The built-in part array's collision geometry beyond spheres: cylinder spheres and a sorting sphere (no BSP).</summary>
+// The built-in part array's collision geometry beyond spheres: cylinder spheres and a sorting sphere (no BSP).
 public sealed partial class SimplePartArray : IPartCollision
 {
     private CylSphere[] _cylSpheres = Array.Empty<CylSphere>();
