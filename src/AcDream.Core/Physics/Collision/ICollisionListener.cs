@@ -33,6 +33,6 @@ public interface ICollisionListener
     /// <paramref name="obj"/>, which has <see cref="PhysicsState.ReportCollisions"/>, started colliding with the environment
     /// (reported once until the collision ends).
     /// </summary>
-    // retail: CPhysicsObj::report_environment_collision (acclient.c:320193) -> weenie DoCollision
+    // retail caller: CPhysicsObj::report_environment_collision (acclient.c:320193) -> weenie DoCollision
     void OnEnvironmentCollision(PhysicsObj obj, in EnvCollisionProfile profile);
 }

@@ -61,15 +61,15 @@ public readonly struct AtkCollisionProfile
 public interface IObjectCollisionListener
 {
     /// <summary><paramref name="obj"/> (with REPORT_COLLISIONS and a weenie) started touching another object.</summary>
-    // retail: CPhysicsObj::report_object_collision (acclient.c:320227) -> weenie DoCollision(ObjCollisionProfile)
+    // retail caller: CPhysicsObj::report_object_collision (acclient.c:320227) -> weenie DoCollision(ObjCollisionProfile)
     void OnObjectCollision(PhysicsObj obj, in ObjCollisionProfile profile);
 
     /// <summary>A missile hit, or <paramref name="obj"/> was hit by a missile.</summary>
-    // retail: CPhysicsObj::report_object_collision (acclient.c:320227) -> weenie DoCollision(AtkCollisionProfile)
+    // retail caller: CPhysicsObj::report_object_collision (acclient.c:320227) -> weenie DoCollision(AtkCollisionProfile)
     void OnAttackCollision(PhysicsObj obj, in AtkCollisionProfile profile);
 
     /// <summary><paramref name="obj"/> stopped touching the object <paramref name="otherId"/>.</summary>
-    // retail: CPhysicsObj::report_object_collision_end (acclient.c:317868) -> weenie DoCollisionEnd
+    // retail caller: CPhysicsObj::report_object_collision_end (acclient.c:317868) -> weenie DoCollisionEnd
     void OnObjectCollisionEnd(PhysicsObj obj, uint otherId);
 }
 

@@ -54,10 +54,10 @@ public struct TargetInfo
 public interface ITargetTracker
 {
     /// <summary>Start tracking <paramref name="objectId"/> for <paramref name="obj"/>.</summary>
-    // retail: CPhysicsObj::set_target (acclient.c:315991)
+    // retail caller: CPhysicsObj::set_target (acclient.c:315991)
     void SetTarget(PhysicsObj obj, uint contextId, uint objectId, float radius, double quantum);
 
     /// <summary>Stop tracking for <paramref name="obj"/>.</summary>
-    // retail: CPhysicsObj::clear_target (acclient.c:316011)
+    // retail caller: CPhysicsObj::clear_target (acclient.c:316011)
     void ClearTarget(PhysicsObj obj);
 }

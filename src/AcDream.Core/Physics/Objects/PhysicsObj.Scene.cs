@@ -26,8 +26,8 @@ public sealed partial class PhysicsObj
     /// bookkeeping that the next lazy read overwrites). Waking is always bit-identical (a visit of an object with nothing to
     /// do repeats retail's visit exactly); it only costs visits. Managers and part arrays that change their own idleness call
     /// it for their owner too.</para>
-    /// <para>Public mutators that deliberately do not wake, each safe because a dormant object's retail update never reads the
-    /// value, nor does the scene's classification or lazy bookkeeping:</para>
+    /// <para>Mutators that deliberately do not wake (public ones and the internal shadow steps), each safe because a dormant
+    /// object's retail update never reads the value, nor does the scene's classification or lazy bookkeeping:</para>
     /// <list type="bullet">
     /// <item><see cref="Friction"/>: read only by calc_friction, which runs only in an active step with a non-zero velocity; a
     /// dormant object either takes no active step (bailed, far, static) or is idle with a +0 velocity, and one that must move

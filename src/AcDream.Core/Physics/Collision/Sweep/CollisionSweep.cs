@@ -25,7 +25,7 @@ public abstract class CollisionSweep
     /// <paramref name="result"/> and returns true; on failure (blocked, or no transition available) returns false and
     /// the object keeps its origin.
     /// </summary>
-    // retail: CPhysicsObj::transition (acclient.c:320060)
+    // retail seam: CPhysicsObj::transition (acclient.c:320060); the retail sweep ports it as PhysicsObj.RunTransition
     public abstract bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result);
 
     /// <summary>

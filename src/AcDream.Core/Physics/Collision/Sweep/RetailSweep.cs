@@ -89,7 +89,7 @@ public sealed class RetailSweep : CollisionSweep
     }
 
     /// <inheritdoc />
-    // retail: CPhysicsObj::transition (acclient.c:320060), result read by UpdateObjectInternal (acclient.c:322718)
+    // retail seam: CPhysicsObj::transition (acclient.c:320060), ported as PhysicsObj.RunTransition
     public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
     {
         Transition? t = RunTransition(obj, oldPos, newPos, adminMove);
