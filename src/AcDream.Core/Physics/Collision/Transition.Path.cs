@@ -49,7 +49,7 @@ internal sealed partial class Transition
             return;
         }
 
-        // Retail divides by 1.0 * radius; PhysicsProfile.SweepStepScale (1 by default) scales that step length (fidelity switch).
+        // non-retail: fidelity switch PhysicsProfile.SweepStepScale (retail divides by 1.0 * radius; the default scale is 1)
         double s = dist / (StepScale() * radius);
         if (s > 1.0)
         {

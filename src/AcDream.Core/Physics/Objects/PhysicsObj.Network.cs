@@ -68,7 +68,8 @@ public sealed partial class PhysicsObj
             return true;
         }
 
-        FollowRemoteReport(p); // retail profile: InterpolateTo(p, IsMovingTo())
+        // non-retail: fidelity switch PhysicsProfile.RemoteSmoothing; the retail profile runs InterpolateTo(p, IsMovingTo())
+        FollowRemoteReport(p);
         return true;
     }
 
