@@ -155,10 +155,6 @@ public sealed class RetailSweep : CollisionSweep
         return obj.EtherealCheckForCollisions();
     }
 
-    /// <summary>True when <paramref name="mover"/>, where it stands, overlaps <paramref name="self"/> (see
-    /// <see cref="PhysicsObj.CheckCollision(RetailSweep, PhysicsObj)"/>).</summary>
-    internal bool CheckCollision(PhysicsObj self, PhysicsObj mover) => self.CheckCollision(this, mover);
-
     /// <inheritdoc />
     public override void ReportCollisionEnd(PhysicsObj obj, bool forceEnd)
     {
