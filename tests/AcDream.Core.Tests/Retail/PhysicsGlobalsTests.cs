@@ -83,8 +83,10 @@ public class PhysicsGlobalsTests
         Assert.Equal(0x3DCCCCCD, Bits(PhysicsGlobals.DummySphereRadius));
         Assert.Equal(0x42C00000, Bits(PhysicsGlobals.PlayerActivityDistance)); // 96.0
         Assert.Equal(unchecked((long)0xBFF0000000000000UL), Bits(PhysicsGlobals.InitialPhysicsTime)); // -1.0
-        // DEFAULT_VIEW_RADIUS = EPSILON * 3.0 + 0.1 with EPSILON the float 0.0002f widened to double.
-        Assert.Equal((double)0.0002f * 3.0 + 0.1, PhysicsGlobals.DefaultViewRadius);
+        // DEFAULT_VIEW_RADIUS is a float global (acclient_data.h:15710) set to EPSILON * 3.0 + 0.1 (acclient.c:784220):
+        // 0.0002f = 0.000199999994947575 widened, * 3 + 0.1 = 0.100599999984843 in double, stored as the float
+        // 0.100599996745586 = 0x3DCE075F.
+        Assert.Equal(0x3DCE075F, Bits(PhysicsGlobals.DefaultViewRadius));
     }
 
     [Fact]

@@ -177,6 +177,25 @@ public class StickyAndConstraintTests
         Assert.Equal(31f, cm.ConstraintPosOffset, 4);
     }
 
+    [Fact]
+    public void Constraint_CountIsARunningTotalOfStepLengths_NotTheLatestStep()
+    {
+        // adjust_offset ends with constraint_pos_offset = |offset| + constraint_pos_offset (acclient.c:389477, the last
+        // statement): every step adds its length. From a count of 0, three 1 m steps give 1, 2, 3 (a reading that stores
+        // only the current step's length would give 1, 1, 1). Step 3 is still unscaled: 2 <= start 10.
+        var s = new ManagerScene(Start);
+        s.Managers.ConstrainTo(ManagerScene.At(Start), 10f, 50f);
+        ConstraintManager cm = s.Managers.ConstraintManager!;
+        Assert.Equal(0f, cm.ConstraintPosOffset);
+        for (int i = 1; i <= 3; i++)
+        {
+            Frame offset = Frame.FromHeading(new Vector3(0f, 1f, 0f), 0f);
+            cm.AdjustOffset(ref offset, 1.0 / 30.0);
+            Assert.Equal(1f, offset.Origin.Y);
+            Assert.Equal((float)i, cm.ConstraintPosOffset);
+        }
+    }
+
     [Theory]
     // fully constrained when max * 0.9 < count: 50 * 0.9 = 45
     [InlineData(44.9f, false)]

@@ -132,7 +132,9 @@ public static class PhysicsGlobals
     public const double InitialPhysicsTime = -1.0;
 
     /// <summary>
-    /// Default object view radius, in metres. Retail: <c>EPSILON * 3.0 + 0.1</c> (acclient.c:784220).
+    /// Default object view radius, in metres: 0.1006f (bit pattern 0x3DCE075F). Retail: the float global
+    /// <c>DEFAULT_VIEW_RADIUS</c> (acclient_data.h:15710) initialised to <c>EPSILON * 3.0 + 0.1</c> (acclient.c:784220): the
+    /// sum is formed in double from the float EPSILON and rounded to float on the store.
     /// </summary>
-    public const double DefaultViewRadius = Epsilon * 3.0 + 0.1;
+    public const float DefaultViewRadius = (float)(Epsilon * 3.0 + 0.1);
 }
