@@ -12,6 +12,8 @@ public enum ArithmeticMode
     /// </summary>
     RetailDouble = 0,
 
-    /// <summary>Plain float32 throughout: every operation rounds to single precision (what a naive port computes).</summary>
+    /// <summary>Plain float32 throughout: every operation rounds to single precision (what a naive port computes). Not a
+    /// candidate retail behaviour: retail set 53-bit precision (<c>ClientMain::ConfigureFPU</c>, acclient.c:60884) and kept it
+    /// under Direct3D (<c>D3DCREATE_FPU_PRESERVE</c>, acclient.c:459978); this mode exists to measure the cost.</summary>
     Float32 = 1,
 }
