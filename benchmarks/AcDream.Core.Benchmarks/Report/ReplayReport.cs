@@ -9,8 +9,9 @@ namespace AcDream.Core.Benchmarks.Report;
 
 /// <summary>
 /// The interpolation replay figures: runs every replay scenario at 30 Hz and at 15-144 fps and writes
-/// <c>docs/interpolation-replay.md</c> (the table) and <c>docs/interpolation-replay.svg</c> (error against the true path over
-/// time). <c>--out DIR</c> chooses the docs folder; <c>--quick</c> runs and writes nothing.
+/// <c>interpolation-replay.md</c> (the table) and <c>interpolation-replay.svg</c> (error against the true path over time) into
+/// <c>artifacts/replay/</c> (git-ignored) by default; <c>--update-docs</c> writes into <c>docs/</c>, <c>--out DIR</c> into any
+/// folder; <c>--quick</c> runs and writes nothing.
 /// </summary>
 internal static class ReplayReport
 {
@@ -19,16 +20,21 @@ internal static class ReplayReport
     public static int Run(ReadOnlySpan<string> args)
     {
         bool quick = false;
-        string outDir = Path.Combine(FindRepoRoot(), "docs");
+        string root = FindRepoRoot();
+        string outDir = Path.Combine(root, "artifacts", "replay");
         for (int i = 0; i < args.Length; i++)
         {
             if (args[i] == "--quick")
             {
                 quick = true;
             }
+            else if (args[i] == "--update-docs")
+            {
+                outDir = Path.Combine(root, "docs");
+            }
             else if (args[i] == "--out" && i + 1 < args.Length)
             {
-                outDir = args[++i];
+                outDir = Path.GetFullPath(args[++i]);
             }
         }
 
@@ -43,7 +49,7 @@ internal static class ReplayReport
         md.AppendLine();
         md.AppendLine("| scenario | frames | mean error (m) | lag (s) | max step (m) | step / cap | overshoot (m) | blips | converge (s) | teleport blip (ticks) | travel after last report (m) | applied / delivered |");
         md.AppendLine("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
-        var chart = new SvgChart("Distance from the true path (30 Hz frames)", "time (s)", "error (m)") { LogY = true, Width = 900, Height = 480 };
+        var chart = new ReportChart("Distance from the true path (30 Hz frames)", "time (s)", "error (m)") { LogY = true, Width = 900, Height = 480 };
         foreach (ReplayScenario sc in ReplayScenarios.All())
         {
             foreach (FrameMode mode in new[] { FrameMode.Fixed30Hz, FrameMode.Variable15To144 })

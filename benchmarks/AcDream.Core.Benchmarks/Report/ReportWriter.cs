@@ -70,8 +70,7 @@ internal static class ReportWriter
         sb.AppendLine();
         sb.AppendLine("![jump over a ledge, x against z, per profile](accuracy-trajectory-ledge.svg)");
         sb.AppendLine();
-        sb.AppendLine("Charts are drawn by the report's own minimal SVG writer (`Report/SvgChart.cs`): no plotting package (ScottPlot,");
-        sb.AppendLine("OxyPlot, SkiaSharp, Plotly.NET) is available on this project's package mirror.");
+        sb.AppendLine("Charts are drawn with ScottPlot 5 and saved as SVG (`Report/ReportChart.cs`).");
         sb.AppendLine();
         if (ctx.Notes.Count > 0)
         {
@@ -139,13 +138,12 @@ internal static class ReportWriter
         foreach (string sw in Switches)
         {
             bool perSimSecond = sw == "substep profile";
-            var chart = new SvgChart($"{sw}: error against cost", perSimSecond ? "µs per simulated second" : "ns per frame", "error (m or deg)")
+            var chart = new ReportChart($"{sw}: error against cost", perSimSecond ? "µs per simulated second" : "ns per frame", "error (m or deg)")
             {
                 LogX = true,
                 LogY = true,
-                Width = 900,
+                Width = 1100,
                 Height = 480,
-                LegendWidth = 260,
             };
             var scenes = new List<string>();
             foreach (ReportRow r in ctx.Rows)
@@ -177,7 +175,7 @@ internal static class ReportWriter
 
         if (ctx.Trajectories.TryGetValue("jump over a ledge", out var series))
         {
-            var t = new SvgChart("jump over a ledge: height against distance east", "x east (m)", "z (m)") { Width = 900, Height = 480, LegendWidth = 300 };
+            var t = new ReportChart("jump over a ledge: height against distance east", "x east (m)", "z (m)") { Width = 1100, Height = 480 };
             foreach (var (name, points) in series)
             {
                 t.Add(name, points, lines: true, markers: false);
