@@ -83,6 +83,8 @@ public sealed class FirstSceneTests
         Assert.Same(FreeSpaceSweep.Instance, free.Sweep);
         Assert.True(free.IsFreeSpace);
         Assert.Throws<ArgumentNullException>(() => new PhysicsWorld((TerrainWorld)null!));
+        Assert.IsType<RetailSweep>(new PhysicsWorld(new AcDream.Core.Physics.Cells.WorldCells(Flat())).Sweep);
+        Assert.Throws<ArgumentNullException>(() => new PhysicsWorld((AcDream.Core.Physics.Cells.WorldCells)null!));
     }
 
     [Fact]
