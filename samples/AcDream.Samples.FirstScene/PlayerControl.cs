@@ -24,7 +24,8 @@ internal static class PlayerControl
     /// <summary>Turn rate, rad/s (positive turns left, counter-clockwise seen from above).</summary>
     public const float TurnRate = MathF.PI / 4f;
 
-    /// <summary>Upward speed of the jump, m/s (a 0.8 m hop: v² / 2g = 16 / 19.6).</summary>
+    /// <summary>Upward speed of the jump, m/s: a hop of v² / 2g = 16 / 19.6 = 0.82 m of free flight (plus the first step,
+    /// taken while still on the ground, without gravity).</summary>
     public const float JumpSpeed = 4.0f;
 
     /// <summary>Sets this frame's commands of the scripted walk at script time <paramref name="t"/> seconds.</summary>

@@ -62,7 +62,8 @@ internal sealed class SceneCheck
     {
         // Walk 4 s at 3.12 and 2 s turning (18.7 m), run 4 s at 6 (24 m), the jump (about 9 m), then 8.5 s of walking (26.5 m).
         bool walked = _path > 60f;
-        // 4 m/s up under 9.8 m/s²: a 0.82 m hop over level ground.
+        // 4 m/s up under 9.8 m/s²: 0.82 m of free flight after a first step of 4/30 m: about 0.95 m over level ground (more
+        // where the ground falls away under the jump).
         bool jumped = _jumpHeight is > 0.5f and < 1.5f;
         // The feet sphere (radius 0.48) stops at the wall: the origin stays about 0.48 m from it, never inside.
         float radius = SetupPhysicsRadius;
