@@ -68,7 +68,7 @@ public sealed class QuickstartTests
         player.SetLocalVelocity(new Vector3(0f, 0f, 4f));       // jump: 4 m/s up; gravity brings it back down
         float top = 0f;
         for (int f = 0; f < 60; f++) { world.Tick(now += 1.0 / 60); top = MathF.Max(top, player.Position.Frame.Origin.Z); }
-        // top ≈ 0.95 m: 4/30 m in the first step (still on the ground: no gravity), then 4² / (2 · 9.8) = 0.82 m
+        // top ≈ 1 m: the first step (1/30 or 1/20 s; still on the ground, so no gravity) rises 0.13-0.2 m, then 4² / (2 · 9.8) = 0.82 m
         // quickstart-end
         return (player, top);
     }
