@@ -39,3 +39,49 @@ public sealed class TerrainDataReportTests
         Assert.True(System.IO.File.Exists(System.IO.Path.Combine(dir, TerrainDataDir.MarkerFile)));
     }
 }
+
+/// <summary>The terrain folder lookup shared by the tests and the report (<see cref="TerrainDataDir.Resolve"/>).</summary>
+public sealed class TerrainDataDirTests : System.IDisposable
+{
+    // A scratch tree: <tmp>/work/repo/tests/bin (the running assembly), <tmp>/work/shared/data/ac-terrain (the data).
+    private readonly string _top = System.IO.Path.Combine(System.IO.Path.GetTempPath(), "acdream-terrain-" + System.Guid.NewGuid().ToString("N"));
+
+    private string Repo => System.IO.Path.Combine(_top, "work", "repo");
+
+    private string Bin => System.IO.Path.Combine(Repo, "tests", "bin");
+
+    private string Data => System.IO.Path.Combine(_top, "work", "shared", "data", "ac-terrain");
+
+    public TerrainDataDirTests()
+    {
+        System.IO.Directory.CreateDirectory(Bin);
+        System.IO.Directory.CreateDirectory(Data);
+        System.IO.File.WriteAllText(System.IO.Path.Combine(Data, TerrainDataDir.MarkerFile), "");
+    }
+
+    public void Dispose() => System.IO.Directory.Delete(_top, recursive: true);
+
+    [Fact]
+    public void RelativeVariable_IsResolvedAgainstTheRepositoryRoot()
+    {
+        // README's value, "../shared/data/ac-terrain", from a test whose working folder is tests/bin.
+        Assert.Equal(Data, TerrainDataDir.Resolve("../shared/data/ac-terrain", Repo, Bin, out _));
+    }
+
+    [Fact]
+    public void Unset_FindsTheSharedFolderByWalkingUp()
+    {
+        Assert.Equal(Data, TerrainDataDir.Resolve(null, Repo, Bin, out string reason));
+        Assert.StartsWith("found ", reason, System.StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void AFolderWithoutTheData_IsNotFound_AndTheReasonSaysWhere()
+    {
+        Assert.Null(TerrainDataDir.Resolve("nowhere", Repo, Bin, out string reason));
+        Assert.Contains(System.IO.Path.Combine(Repo, "nowhere"), reason, System.StringComparison.Ordinal);
+        System.IO.File.Delete(System.IO.Path.Combine(Data, TerrainDataDir.MarkerFile));
+        Assert.Null(TerrainDataDir.Resolve(null, Repo, Bin, out reason));
+        Assert.Contains("unset", reason, System.StringComparison.Ordinal);
+    }
+}

@@ -18,13 +18,20 @@ internal static class TerrainDataDir
     public const string MarkerFile = "landblock_heights_sample.csv";
 
     /// <summary>The folder, or null with <paramref name="reason"/> saying what was looked for and why it was not found.</summary>
-    public static string? Find(out string reason)
+    public static string? Find(out string reason) =>
+        Resolve(Environment.GetEnvironmentVariable(Variable), RepoRoot(), AppContext.BaseDirectory, out reason);
+
+    /// <summary>
+    /// The lookup of <see cref="Find"/> for a given variable value (null or empty: unset), repository root and starting
+    /// folder: the value resolved against <paramref name="repoRoot"/> when relative, else the first
+    /// <c>../shared/data/ac-terrain</c> beside a folder above <paramref name="startDir"/>; only a folder holding
+    /// <see cref="MarkerFile"/> counts.
+    /// </summary>
+    public static string? Resolve(string? value, string? repoRoot, string startDir, out string reason)
     {
-        string? root = RepoRoot();
-        string? value = Environment.GetEnvironmentVariable(Variable);
         if (!string.IsNullOrEmpty(value))
         {
-            string dir = Path.IsPathRooted(value) || root is null ? Path.GetFullPath(value) : Path.GetFullPath(Path.Combine(root, value));
+            string dir = Path.IsPathRooted(value) || repoRoot is null ? Path.GetFullPath(value) : Path.GetFullPath(Path.Combine(repoRoot, value));
             if (File.Exists(Path.Combine(dir, MarkerFile)))
             {
                 reason = $"{Variable}={value} -> {dir}";
@@ -35,17 +42,17 @@ internal static class TerrainDataDir
             return null;
         }
 
-        for (string? d = AppContext.BaseDirectory; d is not null; d = Path.GetDirectoryName(d.TrimEnd(Path.DirectorySeparatorChar)))
+        for (string? d = startDir; d is not null; d = Path.GetDirectoryName(d.TrimEnd(Path.DirectorySeparatorChar)))
         {
             string candidate = Path.GetFullPath(Path.Combine(d, "..", "shared", "data", "ac-terrain"));
             if (File.Exists(Path.Combine(candidate, MarkerFile)))
             {
-                reason = $"found {candidate} (walking up from {AppContext.BaseDirectory})";
+                reason = $"found {candidate} (walking up from {startDir})";
                 return candidate;
             }
         }
 
-        reason = $"{Variable} is unset and no ../shared/data/ac-terrain lies beside any folder above {AppContext.BaseDirectory}";
+        reason = $"{Variable} is unset and no ../shared/data/ac-terrain lies beside any folder above {startDir}";
         return null;
     }
 
