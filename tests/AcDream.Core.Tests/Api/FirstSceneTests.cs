@@ -83,6 +83,12 @@ public sealed class FirstSceneTests
         Assert.Same(FreeSpaceSweep.Instance, free.Sweep);
         Assert.True(free.IsFreeSpace);
         Assert.Throws<ArgumentNullException>(() => new PhysicsWorld((TerrainWorld)null!));
+
+        // A terrain world serves one physics world: a second world over it is refused, the first keeps it.
+        TerrainWorld shared = Flat();
+        var first = new PhysicsWorld(shared);
+        Assert.Throws<ArgumentException>(() => new PhysicsWorld(shared));
+        Assert.IsType<RetailSweep>(first.Sweep);
         Assert.IsType<RetailSweep>(new PhysicsWorld(new AcDream.Core.Physics.Cells.WorldCells(Flat())).Sweep);
         Assert.Throws<ArgumentNullException>(() => new PhysicsWorld((AcDream.Core.Physics.Cells.WorldCells)null!));
     }
