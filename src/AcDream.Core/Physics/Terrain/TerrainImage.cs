@@ -60,7 +60,7 @@ public sealed class TerrainImage
         {
             throw;
         }
-        catch (Exception e) when (e is InvalidOperationException or ArgumentException or IndexOutOfRangeException or IOException)
+        catch (Exception e) when (e is not OutOfMemoryException) // StbImageSharp reports a corrupt file with System.Exception
         {
             throw new InvalidDataException($"{path}: corrupt PNG ({e.Message}).", e);
         }
