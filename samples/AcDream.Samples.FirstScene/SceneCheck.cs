@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 
 namespace AcDream.Samples.FirstScene;
@@ -80,5 +81,5 @@ internal sealed class SceneCheck
         return walked && jumped && hut && followed && fadeDone ? 0 : 1;
     }
 
-    private static float SetupPhysicsRadius => AcDream.Core.Physics.Objects.Parts.SetupPhysics.Human.Spheres[0].Radius;
+    private static float SetupPhysicsRadius => SetupPhysics.Human.Spheres[0].Radius;
 }
