@@ -4,8 +4,9 @@ using BenchmarkDotNet.Running;
 namespace AcDream.Core.Benchmarks;
 
 /// <summary>
-/// Entry point. <c>report</c> runs the accuracy-versus-cost report (add <c>--quick</c> for a short CI run that writes nothing);
-/// <c>replay</c> writes the interpolation replay figures (docs/interpolation-replay.md and .svg); <c>scene-ab</c> compares a
+/// Entry point. <c>report</c> runs the accuracy-versus-cost report into artifacts/report/ (<c>--update-docs</c>: into docs/;
+/// <c>--quick</c>: a short CI run that writes nothing); <c>replay</c> writes the interpolation replay figures into
+/// artifacts/replay/ (<c>--update-docs</c>: docs/interpolation-replay.md and .svg); <c>scene-ab</c> compares a
 /// world tick with and without 100,000 resting objects in one process (see <see cref="Report.SceneAbReport"/>);
 /// anything else goes to BenchmarkDotNet's switcher (e.g. <c>--filter '*'</c>, <c>--job Dry</c>).
 /// </summary>

@@ -9,53 +9,90 @@ namespace AcDream.Core.Benchmarks.Report;
 
 /// <summary>
 /// The accuracy-versus-cost report: runs each scene under each fidelity choice, measures its error against a stated reference
-/// and its time per frame in the same process, and writes <c>docs/accuracy-vs-cost.md</c> with SVG charts beside it.
-/// <c>--quick</c> runs a short piece of every scene once and writes nothing (CI keeps the report from rotting).
-/// <c>--out DIR</c> chooses the docs folder.
+/// and its time per frame in the same process, and writes <c>accuracy-vs-cost.md</c> with SVG charts (ScottPlot) beside it,
+/// into <c>artifacts/report/</c> (git-ignored) by default. <c>--update-docs</c> writes into <c>docs/</c> instead (refreshing
+/// the committed copy); <c>--out DIR</c> chooses any folder. <c>--quick</c> runs a short piece of every scene once and writes
+/// nothing (CI keeps the report from rotting). The console shows one progress line per scene group and an aligned table of
+/// the rows.
 /// </summary>
 internal static class AccuracyReport
 {
     private static readonly PhysicsProfile Retail = PhysicsProfile.Retail;
     private static readonly PhysicsProfile Ace = PhysicsProfile.AceCompatible;
 
+    private static readonly (string Name, Action<ReportContext> Run)[] Groups =
+    [
+        ("substep profile", Substeps),
+        ("arithmetic", Arithmetic),
+        ("renormalisation", Renormalisation),
+        ("sweep resolution", Sweep),
+        ("remote smoothing", Smoothing),
+    ];
+
     public static int Run(ReadOnlySpan<string> args)
     {
         bool quick = false;
         string root = FindRepoRoot();
-        string outDir = Path.Combine(root, "docs");
+        string outDir = Path.Combine(root, "artifacts", "report");
         for (int i = 0; i < args.Length; i++)
         {
             if (args[i] == "--quick")
             {
                 quick = true;
             }
+            else if (args[i] == "--update-docs")
+            {
+                outDir = Path.Combine(root, "docs");
+            }
             else if (args[i] == "--out" && i + 1 < args.Length)
             {
-                outDir = args[++i];
+                outDir = Path.GetFullPath(args[++i]);
+            }
+            else
+            {
+                Console.Error.WriteLine($"report: unknown argument '{args[i]}' (use --quick, --update-docs or --out DIR)");
+                return 2;
             }
         }
 
-        string? terrainDir = ReportContext.FindTerrainDir(root);
+        string? terrainDir = ReportContext.FindTerrainDir(out string terrainReason);
+        Console.WriteLine(terrainDir is null
+            ? $"real terrain: not found ({terrainReason}); the Holtburg scene is skipped"
+            : $"real terrain: {terrainDir}");
         if (!quick)
         {
             // Warm-up: every scene's code once (quick), then a pause so the tiered JIT installs optimised code before timing.
+            Console.WriteLine("warm-up: every scene once, untimed");
             var warm = new ReportContext(true, terrainDir) { Silent = true };
-            Substeps(warm);
-            Arithmetic(warm);
-            Renormalisation(warm);
-            Sweep(warm);
-            Smoothing(warm);
+            foreach (var g in Groups)
+            {
+                g.Run(warm);
+            }
+
             System.Threading.Thread.Sleep(500);
             FineCache.Clear();
         }
 
         var ctx = new ReportContext(quick, terrainDir);
         var clock = System.Diagnostics.Stopwatch.StartNew();
-        Substeps(ctx);
-        Arithmetic(ctx);
-        Renormalisation(ctx);
-        Sweep(ctx);
-        Smoothing(ctx);
+        for (int k = 0; k < Groups.Length; k++)
+        {
+            var g = Groups[k];
+            int before = ctx.Rows.Count;
+            var groupClock = System.Diagnostics.Stopwatch.StartNew();
+            Console.WriteLine();
+            Console.WriteLine($"[{k + 1}/{Groups.Length}] {g.Name}");
+            Console.WriteLine(ReportContext.TableHeader);
+            g.Run(ctx);
+            Console.WriteLine($"      {ctx.Rows.Count - before} rows in {groupClock.Elapsed.TotalSeconds:F1} s");
+        }
+
+        if (ctx.TerrainDir is null)
+        {
+            ctx.Notes.Add($"The Holtburg walker scene was skipped: real terrain not found ({terrainReason}).");
+        }
+
+        Console.WriteLine();
         Console.WriteLine($"report scenes ran in {clock.Elapsed.TotalSeconds:F1} s");
         string md = ReportWriter.Markdown(ctx);
         if (quick)
@@ -67,7 +104,7 @@ internal static class AccuracyReport
         Directory.CreateDirectory(outDir);
         ReportWriter.Charts(ctx, outDir);
         File.WriteAllText(Path.Combine(outDir, "accuracy-vs-cost.md"), md);
-        Console.WriteLine($"wrote {Path.Combine(outDir, "accuracy-vs-cost.md")} and the charts beside it");
+        Console.WriteLine($"wrote {Path.Combine(outDir, "accuracy-vs-cost.md")} and its charts beside it");
         return 0;
     }
 
@@ -96,11 +133,6 @@ internal static class AccuracyReport
                         (prof, pc, s) => new HoltburgWalkScene(holtburg.Value, prof, pc, s), p, pacing);
                 }
             }
-        }
-
-        if (ctx.TerrainDir is null)
-        {
-            ctx.Notes.Add("The Holtburg walker scene was skipped: ACDREAM_TERRAIN_DIR is unset and ../shared/data/ac-terrain is absent.");
         }
 
         // What the fine-step references themselves cost (their error is zero by definition).

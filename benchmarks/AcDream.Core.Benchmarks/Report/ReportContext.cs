@@ -102,11 +102,22 @@ internal sealed class ReportContext
         Rows.Add(row);
         if (!Silent)
         {
-            Console.WriteLine($"  {switchName,-14} {scene,-28} {choice,-34} error {error,10:G4} {unit,-4} {ns,9:F1} ns/frame {bytes,6:F1} B/frame {note}");
+            Console.WriteLine(TableRow(scene, (isRetail ? "* " : "") + choice, error, unit, ns, bytes, note));
         }
 
         return row;
     }
+
+    /// <summary>Header of the console table (the columns of <see cref="TableRow"/>).</summary>
+    public static string TableHeader { get; } = string.Create(System.Globalization.CultureInfo.InvariantCulture,
+        $"      {"scene",-30} {"choice (* = retail)",-42} {"error",11} {"unit",-4} {"ns/frame",10} {"B/frame",8}  note");
+
+    /// <summary>One console row: fixed-width columns (long text is cut with "~" so the columns never drift).</summary>
+    public static string TableRow(string scene, string choice, double error, string unit, double ns, double bytes, string note) =>
+        string.Create(System.Globalization.CultureInfo.InvariantCulture,
+            $"      {Fit(scene, 30),-30} {Fit(choice, 42),-42} {error,11:G4} {Fit(unit, 4),-4} {ns,10:F1} {bytes,8:F1}  {note}");
+
+    private static string Fit(string s, int width) => s.Length <= width ? s : string.Concat(s.AsSpan(0, width - 1), "~");
 
     /// <summary>Adds a trajectory series to plot <paramref name="title"/>.</summary>
     public void AddTrajectory(string title, string name, List<(double X, double Y)> points)
@@ -120,16 +131,8 @@ internal sealed class ReportContext
         list.Add((name, points));
     }
 
-    /// <summary>ACDREAM_TERRAIN_DIR, else ../shared/data/ac-terrain beside the repository root when present, else null.</summary>
-    public static string? FindTerrainDir(string repoRoot)
-    {
-        string? dir = Environment.GetEnvironmentVariable("ACDREAM_TERRAIN_DIR");
-        if (!string.IsNullOrEmpty(dir))
-        {
-            return Directory.Exists(dir) ? dir : null;
-        }
-
-        string fallback = Path.GetFullPath(Path.Combine(repoRoot, "..", "shared", "data", "ac-terrain"));
-        return File.Exists(Path.Combine(fallback, "landblock_heights_sample.csv")) ? fallback : null;
-    }
+    /// <summary>The real terrain folder, found as the tests find it (<see cref="Tests.Support.Shared.TerrainDataDir"/>:
+    /// ACDREAM_TERRAIN_DIR, a relative value resolved against the repository root, else ../shared/data/ac-terrain beside the
+    /// repository), or null with <paramref name="reason"/>.</summary>
+    public static string? FindTerrainDir(out string reason) => Tests.Support.Shared.TerrainDataDir.Find(out reason);
 }

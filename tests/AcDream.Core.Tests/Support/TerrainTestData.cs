@@ -9,17 +9,18 @@ namespace AcDream.Core.Tests.Support;
 
 /// <summary>
 /// A fact that needs the real Dereth terrain fixtures (heightfield and land height table). They are not in the repository:
-/// the folder comes from the environment variable <c>ACDREAM_TERRAIN_DIR</c> (.ci/run sets it to ../shared/data/ac-terrain),
-/// and the test is skipped, naming the variable, when it is unset.
+/// the folder is found as the report finds it (<see cref="TerrainDataDir"/>: <c>ACDREAM_TERRAIN_DIR</c>, a relative value
+/// resolved against the repository root, else ../shared/data/ac-terrain beside the repository); when it is not found the test
+/// is skipped with the reason, and <c>TerrainDataReportTests</c> prints the same reason in every run.
 /// </summary>
 public sealed class TerrainDataFactAttribute : FactAttribute
 {
-    /// <summary>Skips the test when <see cref="TerrainTestData.Variable"/> is unset.</summary>
+    /// <summary>Skips the test when the fixtures are not found.</summary>
     public TerrainDataFactAttribute()
     {
-        if (string.IsNullOrEmpty(Environment.GetEnvironmentVariable(TerrainTestData.Variable)))
+        if (TerrainTestData.FindDir(out string reason) is null)
         {
-            Skip = $"Real terrain data not available: set the environment variable {TerrainTestData.Variable} to the ac-terrain folder (../shared/data/ac-terrain).";
+            Skip = "Real terrain data not found: " + reason + ".";
         }
     }
 }
@@ -27,7 +28,9 @@ public sealed class TerrainDataFactAttribute : FactAttribute
 /// <summary>Shared terrain scene builders: the real fixtures (loaded once) and small synthetic landblocks.</summary>
 internal static class TerrainTestData
 {
-    public const string Variable = "ACDREAM_TERRAIN_DIR";
+    public const string Variable = TerrainDataDir.Variable;
+
+    private static readonly Lazy<(string? Dir, string Reason)> Found = new(() => (TerrainDataDir.Find(out string reason), reason));
 
     private static readonly Lazy<LandHeightTable> RealTableLazy = new(() =>
         TerrainDataFiles.ReadHeightTableCsv(Path.Combine(Dir, "land_height_table.csv")));
@@ -37,8 +40,15 @@ internal static class TerrainTestData
 
     private static readonly Lazy<TerrainImage> ImageLazy = new(() => TerrainImage.Load(Path.Combine(Dir, "terrain.png")));
 
-    public static string Dir => Environment.GetEnvironmentVariable(Variable)
-        ?? throw new InvalidOperationException($"{Variable} is not set.");
+    /// <summary>The fixtures folder (see <see cref="TerrainDataDir"/>); throws when it is not found.</summary>
+    public static string Dir => Found.Value.Dir ?? throw new InvalidOperationException("Real terrain data not found: " + Found.Value.Reason);
+
+    /// <summary>The fixtures folder, or null with the reason.</summary>
+    public static string? FindDir(out string reason)
+    {
+        reason = Found.Value.Reason;
+        return Found.Value.Dir;
+    }
 
     /// <summary>The real land height table.</summary>
     public static LandHeightTable RealTable => RealTableLazy.Value;

@@ -173,6 +173,8 @@ public sealed partial class PhysicsObj
     /// Sets the velocity (clamped to 50 m/s; marks <see cref="JumpedThisFrame"/> when it changes) and activates a non-static
     /// object, restarting its clock if it was inactive.
     /// </summary>
+    /// <remarks>An object without a part array is in no cell and never moves, whatever its velocity (retail); its
+    /// <see cref="SetupIssues"/> reports <see cref="ObjectSetupIssues.NoPartArray"/>.</remarks>
     /// <exception cref="System.ArgumentException">A component is NaN or infinite (state unchanged).</exception>
     // retail: CPhysicsObj::set_velocity (acclient.c:318577)
     public void SetVelocity(Vector3 velocity)

@@ -14,13 +14,22 @@ public sealed partial class PhysicsObj
     /// used the report, the constraint is re-armed at the object's current position with
     /// <see cref="GetStartConstraintDistance"/> / <see cref="GetMaxConstraintDistance"/> (the dead-reckoning leash).
     /// </summary>
-    /// <remarks>SmartBox's parent and placement-frame handling (unset_parent, SetPlacementFrame) and its error counter are
-    /// the client's concern and not ported here.</remarks>
-    /// <param name="p">Reported position.</param>
-    /// <param name="positionTimestamp">The report's 16-bit position timestamp (POSITION_TS).</param>
-    /// <param name="teleportTimestamp">The report's 16-bit teleport timestamp (TELEPORT_TS).</param>
-    /// <param name="hasContact">The report says the object is on the ground.</param>
-    /// <returns>True when the report moved, queued or placed the object.</returns>
+    /// <remarks><para>SmartBox's parent and placement-frame handling (unset_parent, SetPlacementFrame) and its error counter are
+    /// the client's concern and not ported here.</para>
+    /// <para>Before the first report the network layer gives the object a part array from its Setup, a movement manager
+    /// (<see cref="GetMinterp"/>) and its first position (<see cref="EnterWorld"/>); between reports it keeps the part array's
+    /// root motion at the motion the server last reported (docs/interpolation.md, "What a network layer sets first").</para></remarks>
+    /// <param name="p">The reported position: the cell id and the frame local to that cell's landblock, as the server's
+    /// position update carries them.</param>
+    /// <param name="positionTimestamp">The update's 16-bit position sequence (retail POSITION_TS), compared with wrap-around: a
+    /// report whose sequence is not newer than the last one applied is dropped.</param>
+    /// <param name="teleportTimestamp">The update's 16-bit teleport sequence (retail TELEPORT_TS): older than the object's is a
+    /// stale report (dropped); newer means the server moved the object discontinuously, so it is placed (teleported) at
+    /// <paramref name="p"/> instead of interpolated. Pass the last value received while no teleport happened (0 from the
+    /// start).</param>
+    /// <param name="hasContact">The update's contact flag: the object stands on the ground. Without contact a nearby object is
+    /// not interpolated (its own physics carries it, e.g. through a jump) unless the report teleports it.</param>
+    /// <returns>True when the report moved, queued or placed the object; false when it was dropped (stale or not used).</returns>
     /// <exception cref="ArgumentException"><paramref name="p"/> has a non-finite origin or an invalid rotation; nothing changes.</exception>
     // retail: SmartBox::HandleReceivedPosition (acclient.c:145124)
     public bool HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)

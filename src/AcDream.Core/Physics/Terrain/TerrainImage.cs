@@ -1,8 +1,7 @@
 using System;
-using System.Buffers.Binary;
 using System.IO;
-using System.IO.Compression;
 using AcDream.Core.Physics.Math;
+using StbImageSharp;
 
 namespace AcDream.Core.Physics.Terrain;
 
@@ -11,8 +10,7 @@ namespace AcDream.Core.Physics.Terrain;
 /// 2041 × 2041, 8-bit RGBA, R = height index, G = terrain type, B = road bits). Global vertex (gx, gy) =
 /// (landblock x * 8 + vx, landblock y * 8 + vy) is at column gx, row 2040 - gy (row 0 is the north edge).
 /// </summary>
-/// <remarks>Includes a minimal PNG reader (8-bit RGBA, non-interlaced; all five row filters) built on
-/// <see cref="ZLibStream"/>. Load-time only; it allocates.</remarks>
+/// <remarks>The PNG is decoded with StbImageSharp (8-bit RGBA). Load-time only; it allocates.</remarks>
 public sealed class TerrainImage
 {
     /// <summary>Vertices along one side of the world: 255 * 8 + 1 = 2041.</summary>
@@ -41,64 +39,41 @@ public sealed class TerrainImage
             throw new InvalidDataException($"{path} is not a PNG file.");
         }
 
-        int width = 0, height = 0;
-        using var idat = new MemoryStream();
-        int pos = 8;
-        while (pos + 12 <= file.Length)
+        ImageResult image;
+        try
         {
-            int len = BinaryPrimitives.ReadInt32BigEndian(file.AsSpan(pos));
-            if (len < 0 || pos + 12 + (long)len > file.Length)
+            using var stream = new MemoryStream(file, writable: false);
+            ImageInfo? info = ImageInfo.FromStream(stream);
+            if (info is not { } i || i.BitsPerChannel != 8 || i.ColorComponents != ColorComponents.RedGreenBlueAlpha)
             {
-                throw new InvalidDataException($"{path}: truncated PNG chunk.");
+                throw new InvalidDataException($"{path}: only 8-bit RGBA PNG is supported.");
             }
 
-            ReadOnlySpan<byte> type = file.AsSpan(pos + 4, 4);
-            ReadOnlySpan<byte> data = file.AsSpan(pos + 8, len);
-            if (type.SequenceEqual("IHDR"u8))
+            if (i.Width != Side || i.Height != Side)
             {
-                width = BinaryPrimitives.ReadInt32BigEndian(data);
-                height = BinaryPrimitives.ReadInt32BigEndian(data[4..]);
-                if (data[8] != 8 || data[9] != 6 || data[10] != 0 || data[11] != 0 || data[12] != 0)
-                {
-                    throw new InvalidDataException($"{path}: only 8-bit RGBA non-interlaced PNG is supported.");
-                }
-            }
-            else if (type.SequenceEqual("IDAT"u8))
-            {
-                idat.Write(data);
-            }
-            else if (type.SequenceEqual("IEND"u8))
-            {
-                break;
+                throw new InvalidDataException($"{path}: expected {Side} x {Side} pixels, found {i.Width} x {i.Height}.");
             }
 
-            pos += 12 + len;
+            image = ImageResult.FromMemory(file, ColorComponents.RedGreenBlueAlpha);
+        }
+        catch (InvalidDataException)
+        {
+            throw;
+        }
+        catch (Exception e) when (e is not OutOfMemoryException) // StbImageSharp reports a corrupt file with System.Exception
+        {
+            throw new InvalidDataException($"{path}: corrupt PNG ({e.Message}).", e);
         }
 
-        if (width != Side || height != Side)
-        {
-            throw new InvalidDataException($"{path}: expected {Side} x {Side} pixels, found {width} x {height}.");
-        }
-
+        int width = image.Width, height = image.Height;
         const int bpp = 4;
-        int stride = width * bpp;
-        byte[] raw = new byte[height * (stride + 1)];
-        idat.Position = 0;
-        using (var z = new ZLibStream(idat, CompressionMode.Decompress))
-        {
-            z.ReadExactly(raw);
-        }
-
+        byte[] pixels = image.Data;
         var hgt = new byte[width * height];
         var typ = new byte[width * height];
         var road = new byte[width * height];
-        byte[] prev = new byte[stride];
-        byte[] cur = new byte[stride];
         for (int row = 0; row < height; row++)
         {
-            int src = row * (stride + 1);
-            byte filter = raw[src];
-            Unfilter(filter, raw.AsSpan(src + 1, stride), prev, cur, bpp, path);
+            ReadOnlySpan<byte> cur = pixels.AsSpan(row * width * bpp, width * bpp);
             for (int col = 0; col < width; col++)
             {
                 int p = col * bpp;
@@ -112,8 +87,6 @@ public sealed class TerrainImage
                 typ[i] = cur[p + 1];
                 road[i] = cur[p + 2];
             }
-
-            (prev, cur) = (cur, prev);
         }
 
         return new TerrainImage(hgt, typ, road);
@@ -140,35 +113,5 @@ public sealed class TerrainImage
         }
 
         return new LandBlockData(id, h, t);
-    }
-
-    // PNG row filters (ISO/IEC 15948 §9): None, Sub, Up, Average, Paeth.
-    private static void Unfilter(byte filter, ReadOnlySpan<byte> src, ReadOnlySpan<byte> prev, Span<byte> cur, int bpp, string path)
-    {
-        for (int i = 0; i < src.Length; i++)
-        {
-            int a = i >= bpp ? cur[i - bpp] : 0;
-            int b = prev[i];
-            int c = i >= bpp ? prev[i - bpp] : 0;
-            int x = src[i];
-            cur[i] = filter switch
-            {
-                0 => (byte)x,
-                1 => (byte)(x + a),
-                2 => (byte)(x + b),
-                3 => (byte)(x + ((a + b) >> 1)),
-                4 => (byte)(x + Paeth(a, b, c)),
-                _ => throw new InvalidDataException($"{path}: unknown PNG filter {filter}."),
-            };
-        }
-    }
-
-    private static int Paeth(int a, int b, int c)
-    {
-        int p = a + b - c;
-        int pa = System.Math.Abs(p - a);
-        int pb = System.Math.Abs(p - b);
-        int pc = System.Math.Abs(p - c);
-        return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
     }
 }

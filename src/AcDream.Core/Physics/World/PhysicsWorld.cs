@@ -110,6 +110,9 @@ public sealed partial class PhysicsWorld
 
     /// <summary>
     /// The player object (retail <c>CPhysicsObj::player_object</c>): objects measure their distance to it. Null for none.
+    /// Setting an object that has no movement manager gives it one through <see cref="PhysicsObj.GetMinterp"/> (so through
+    /// <see cref="MovementManagerFactory"/> when set): retail's player always has one, and without it an object resting on
+    /// walkable ground deactivates itself every other step and walks at half speed.
     /// </summary>
     /// <exception cref="ArgumentException">The object belongs to another world or was removed.</exception>
     public PhysicsObj? Player
@@ -126,6 +129,13 @@ public sealed partial class PhysicsWorld
             {
                 Scene.WakeGatedDormant();
                 value?.Touch();
+            }
+
+            // non-retail: the player is given its movement manager here (retail's client creates it when the command
+            // interpreter first moves the player); see docs/divergences.md
+            if (value is not null && value.MovementManager is null)
+            {
+                value.GetMinterp();
             }
 
             _player = value;

@@ -1,0 +1,38 @@
+using System;
+
+namespace AcDream.Core.Physics.Objects;
+
+/// <summary>
+/// What keeps an object from walking as a retail creature would (<see cref="PhysicsObj.SetupIssues"/>). Each is legal (retail
+/// has such objects) but a walking creature or player should show <see cref="None"/>.
+/// </summary>
+[Flags]
+public enum ObjectSetupIssues
+{
+    /// <summary>Nothing: the object can walk, step and collide.</summary>
+    None = 0,
+
+    /// <summary>No part array: the object never enters a cell, so it never moves (retail <c>CPhysicsObj::enter_cell</c>
+    /// needs one) and velocities set on it do nothing.</summary>
+    NoPartArray = 1 << 0,
+
+    /// <summary>A part array without collision spheres: each step keeps the origin and takes only the new orientation, so
+    /// root motion and velocity do not move it.</summary>
+    NoCollisionSpheres = 1 << 1,
+
+    /// <summary>No movement manager: at rest on walkable ground the object deactivates itself every other step (walking at
+    /// half speed). <see cref="PhysicsObj.GetMinterp"/> creates one; the world's player gets one when it is set.</summary>
+    NoMovementManager = 1 << 2,
+
+    /// <summary>Step-up or step-down height at or below 0.01 m, retail's value for an object without a Setup: the object
+    /// cannot follow terrain unevenness (it stalls on a slope change). Use a Setup's heights, e.g.
+    /// <see cref="Parts.SetupPhysics.Human"/>.</summary>
+    NoSetupStepHeights = 1 << 3,
+
+    /// <summary>The world sweeps through free space (no terrain, no walls): a world built over a terrain world uses the retail
+    /// sweep.</summary>
+    FreeSpaceSweep = 1 << 4,
+
+    /// <summary>The object is not in a cell (never entered the world, or could not be placed): the tick skips it.</summary>
+    NotInCell = 1 << 5,
+}

@@ -1,0 +1,101 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Math;
+
+namespace AcDream.Core.Physics.Objects.Parts;
+
+/// <summary>
+/// The physics fields of a Setup (retail <c>CSetup</c>, the 0x02xxxxxx records of <c>client_portal.dat</c>): collision spheres,
+/// cylinder spheres, bounding radius and height, and the step-up and step-down heights. A client reads them from the object's
+/// Setup and builds its part array from them (<see cref="SimplePartArray(SetupPhysics, int)"/>); <see cref="Human"/> holds the
+/// values of the human character Setup 0x02000001.
+/// </summary>
+/// <remarks>Immutable: the spans are copies taken at construction, so one instance can be shared by many objects and
+/// worlds.</remarks>
+public sealed class SetupPhysics
+{
+    private readonly Sphere[] _spheres;
+    private readonly CylSphere[] _cylSpheres;
+
+    /// <summary>Creates a setup's physics fields (object-local, unscaled, metres).</summary>
+    /// <param name="spheres">Collision spheres (retail <c>CSetup::sphere</c>).</param>
+    /// <param name="cylSpheres">Cylinder spheres (retail <c>CSetup::cylsphere</c>).</param>
+    /// <param name="radius">Bounding radius (retail <c>CSetup::radius</c>).</param>
+    /// <param name="height">Height (retail <c>CSetup::height</c>).</param>
+    /// <param name="stepUpHeight">Step-up height (retail <c>CSetup::step_up_height</c>).</param>
+    /// <param name="stepDownHeight">Step-down height (retail <c>CSetup::step_down_height</c>).</param>
+    /// <exception cref="ArgumentException">A value is NaN or infinite, a sphere or cylinder radius or a cylinder height is not
+    /// positive, or a height is negative.</exception>
+    public SetupPhysics(ReadOnlySpan<Sphere> spheres, ReadOnlySpan<CylSphere> cylSpheres, float radius, float height,
+        float stepUpHeight, float stepDownHeight)
+    {
+        for (int i = 0; i < spheres.Length; i++)
+        {
+            Sphere s = spheres[i];
+            if (!VectorMath.IsFinite(s.Center) || !float.IsFinite(s.Radius) || !(s.Radius > 0f))
+            {
+                throw new ArgumentException("Spheres need a finite centre and a positive finite radius.", nameof(spheres));
+            }
+        }
+
+        for (int i = 0; i < cylSpheres.Length; i++)
+        {
+            CylSphere c = cylSpheres[i];
+            if (!VectorMath.IsFinite(c.LowPt) || !float.IsFinite(c.Radius) || !float.IsFinite(c.Height) || !(c.Radius > 0f) || !(c.Height > 0f))
+            {
+                throw new ArgumentException("Cylinder spheres need a finite low point and positive finite radius and height.", nameof(cylSpheres));
+            }
+        }
+
+        Check(radius, nameof(radius));
+        Check(height, nameof(height));
+        Check(stepUpHeight, nameof(stepUpHeight));
+        Check(stepDownHeight, nameof(stepDownHeight));
+        _spheres = spheres.ToArray();
+        _cylSpheres = cylSpheres.ToArray();
+        Radius = radius;
+        Height = height;
+        StepUpHeight = stepUpHeight;
+        StepDownHeight = stepDownHeight;
+    }
+
+    /// <summary>
+    /// The human character Setup 0x02000001 (every player and human creature): two spheres of radius 0.48 m, centred
+    /// 0.48 m (feet) and 1.2 m (head) above the origin, no cylinder spheres, bounding radius 0.48 m, height 1.835 m, step-up
+    /// 0.6 m and step-down 1.5 m. Sources are listed in <c>docs/getting-started.md</c> ("The human setup").
+    /// </summary>
+    public static SetupPhysics Human { get; } = new(
+        new[] { new Sphere(new Vector3(0f, 0f, 0.48f), 0.48f), new Sphere(new Vector3(0f, 0f, 1.2f), 0.48f) },
+        ReadOnlySpan<CylSphere>.Empty,
+        radius: 0.48f,
+        height: 1.835f,
+        stepUpHeight: 0.6f,
+        stepDownHeight: 1.5f);
+
+    /// <summary>Collision spheres, object-local and unscaled.</summary>
+    public ReadOnlySpan<Sphere> Spheres => _spheres;
+
+    /// <summary>Cylinder spheres, object-local and unscaled.</summary>
+    public ReadOnlySpan<CylSphere> CylSpheres => _cylSpheres;
+
+    /// <summary>Bounding radius, metres.</summary>
+    public float Radius { get; }
+
+    /// <summary>Height, metres.</summary>
+    public float Height { get; }
+
+    /// <summary>Step-up height, metres: the highest ledge a walk climbs.</summary>
+    public float StepUpHeight { get; }
+
+    /// <summary>Step-down height, metres: the deepest drop a walk follows without leaving the ground.</summary>
+    public float StepDownHeight { get; }
+
+    private static void Check(float value, string name)
+    {
+        if (!float.IsFinite(value) || value < 0f)
+        {
+            throw new ArgumentException("Setup sizes must be finite and not negative.", name);
+        }
+    }
+}

@@ -1,0 +1,58 @@
+using AcDream.Core.Physics.Objects.Parts;
+
+namespace AcDream.Core.Physics.Objects;
+
+// The setup check: what keeps the object from walking (not retail; a client's diagnostic).
+public sealed partial class PhysicsObj
+{
+    /// <summary>Largest step height that counts as "no Setup" (retail's 0.01 f default, acclient.c:325399).</summary>
+    private const float NoSetupStepHeight = 0.0099999998f;
+
+    /// <summary>
+    /// What keeps this object from walking, stepping and colliding as a retail creature would: <see cref="ObjectSetupIssues.None"/>
+    /// for a creature built from a Setup (<see cref="SimplePartArray(SetupPhysics, int)"/>), with a movement manager, entered
+    /// into a world over terrain. Cheap; not part of the tick. Check it once after creating an object — an issue is otherwise
+    /// silent (the object simply does not move, or moves at half speed).
+    /// </summary>
+    public ObjectSetupIssues SetupIssues
+    {
+        get
+        {
+            ObjectSetupIssues issues = ObjectSetupIssues.None;
+            IPartArray? parts = PartArray;
+            if (parts is null)
+            {
+                issues |= ObjectSetupIssues.NoPartArray;
+            }
+            else
+            {
+                if (parts.NumSpheres == 0)
+                {
+                    issues |= ObjectSetupIssues.NoCollisionSpheres;
+                }
+
+                if (parts.StepUpHeight <= NoSetupStepHeight || parts.StepDownHeight <= NoSetupStepHeight)
+                {
+                    issues |= ObjectSetupIssues.NoSetupStepHeights;
+                }
+            }
+
+            if (MovementManager is null)
+            {
+                issues |= ObjectSetupIssues.NoMovementManager;
+            }
+
+            if (World.IsFreeSpace)
+            {
+                issues |= ObjectSetupIssues.FreeSpaceSweep;
+            }
+
+            if (CellId == 0)
+            {
+                issues |= ObjectSetupIssues.NotInCell;
+            }
+
+            return issues;
+        }
+    }
+}
