@@ -107,9 +107,12 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Starts a command as the player gives it (<see cref="MotionInterp.DoMotion"/>), then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <remarks>The object's <see cref="Objects.PhysicsObj.LastMoveWasAutonomous"/> becomes true first, as
+    /// <c>CPhysicsObj::DoMotion</c> (acclient.c:317314) sets it: this client's own commands.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 1 -> CMotionInterp::PerformMovement (acclient.c:344669)
     public int DoMotion(uint motion, in MovementParameters p)
     {
+        MarkAutonomous();
         Activate();
         int r = GetMinterp().DoMotion(motion, p);
         PhysicsObj?.CheckForCompletedMotions();
@@ -129,9 +132,11 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Stops a command as the player gives it (<see cref="MotionInterp.StopMotion"/>), then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <remarks>Marks the move autonomous first, as <c>CPhysicsObj::StopMotion</c> (acclient.c:317353) does.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 3
     public int StopMotion(uint motion, in MovementParameters p)
     {
+        MarkAutonomous();
         Activate();
         int r = GetMinterp().StopMotion(motion, p);
         PhysicsObj?.CheckForCompletedMotions();
@@ -159,6 +164,14 @@ public sealed class MovementManager : IMovementManager
     }
 
     private void Activate() => PhysicsObj?.SetActive(true);
+
+    private void MarkAutonomous()
+    {
+        if (PhysicsObj is not null)
+        {
+            PhysicsObj.LastMoveWasAutonomous = true;
+        }
+    }
 
     /// <inheritdoc />
     // retail: MovementManager::IsMovingTo (acclient.c:339311)

@@ -55,7 +55,18 @@ public sealed class RetailSpeedMotionTable : IMotionTable
     public int DoInterpretedMotion(uint motion, in MovementParameters p)
     {
         float speed = p.Speed;
-        if ((motion & MotionCommand.StyleMask) != 0)
+        // Side-step and turn first: their ids (0x65...) carry the substate bit too.
+        if (motion == MotionCommand.SideStepRight)
+        {
+            _sidestep = true;
+            _sidestepMod = speed;
+        }
+        else if (motion == MotionCommand.TurnRight)
+        {
+            _turn = true;
+            _turnMod = speed;
+        }
+        else if ((motion & MotionCommand.StyleMask) != 0)
         {
             _style = motion;
             _substate = MotionCommand.Ready;
@@ -65,16 +76,6 @@ public sealed class RetailSpeedMotionTable : IMotionTable
         {
             _substate = motion;
             _substateMod = speed;
-        }
-        else if (motion == MotionCommand.SideStepRight)
-        {
-            _sidestep = true;
-            _sidestepMod = speed;
-        }
-        else if (motion == MotionCommand.TurnRight)
-        {
-            _turn = true;
-            _turnMod = speed;
         }
         else if ((motion & MotionCommand.ActionMask) == 0)
         {
@@ -132,9 +133,9 @@ public sealed class RetailSpeedMotionTable : IMotionTable
         _substateMod = 1f;
         _sidestep = false;
         _turn = false;
-        _completedCount = 0;
-        _completedHead = 0;
         Recompute();
+        // The default state's cycle is a started motion too (MotionTableManager::initialize_state queues it).
+        Complete(MotionCommand.Ready);
     }
 
     /// <inheritdoc />
