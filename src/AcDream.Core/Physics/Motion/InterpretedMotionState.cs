@@ -19,19 +19,40 @@ public sealed class InterpretedMotionState
     public uint ForwardCommand { get; set; }
 
     /// <summary>Speed of <see cref="ForwardCommand"/> (negative for backwards; the run rate when running).</summary>
-    public float ForwardSpeed { get; set; }
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float ForwardSpeed
+    {
+        get => _forwardSpeed;
+        set => _forwardSpeed = MotionChecks.Finite(value);
+    }
+
+    private float _forwardSpeed;
 
     /// <summary>The side-step modifier (0 or <see cref="MotionCommand.SideStepRight"/>).</summary>
     public uint SidestepCommand { get; set; }
 
     /// <summary>Speed of the side-step (negative is left).</summary>
-    public float SidestepSpeed { get; set; }
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float SidestepSpeed
+    {
+        get => _sidestepSpeed;
+        set => _sidestepSpeed = MotionChecks.Finite(value);
+    }
+
+    private float _sidestepSpeed;
 
     /// <summary>The turn modifier (0 or <see cref="MotionCommand.TurnRight"/>).</summary>
     public uint TurnCommand { get; set; }
 
     /// <summary>Speed of the turn (negative is left).</summary>
-    public float TurnSpeed { get; set; }
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float TurnSpeed
+    {
+        get => _turnSpeed;
+        set => _turnSpeed = MotionChecks.Finite(value);
+    }
+
+    private float _turnSpeed;
 
     /// <summary>The queued actions.</summary>
     public ActionList Actions { get; } = new();

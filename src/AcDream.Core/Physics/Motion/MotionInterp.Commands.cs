@@ -10,9 +10,11 @@ public sealed partial class MotionInterp
     /// the result (<see cref="DoInterpretedMotion"/>) and records the command in the raw state.
     /// </summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number (nothing recorded).</returns>
+    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::DoMotion (acclient.c:344599)
     public int DoMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
         {
@@ -68,9 +70,11 @@ public sealed partial class MotionInterp
     /// <summary>Stops a command as the player gives it: converts it as <see cref="DoMotion"/> does, stops the result and
     /// removes the command from the raw state.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::StopMotion (acclient.c:344080)
     public int StopMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
         {
@@ -101,9 +105,11 @@ public sealed partial class MotionInterp
     /// long jump charges, a walk, run or side-step) it is only recorded; an action in the air fails with 0x24.
     /// </summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::DoInterpretedMotion (acclient.c:343974)
     public int DoInterpretedMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
         {
@@ -181,9 +187,11 @@ public sealed partial class MotionInterp
     /// <summary>Stops an interpreted motion: through the motion table when it may move (queueing a Ready), otherwise only
     /// in the interpreted state.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::StopInterpretedMotion (acclient.c:344033)
     public int StopInterpretedMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
         {

@@ -75,7 +75,16 @@ public sealed partial class MotionInterp : IMotionInterpreter
 
     /// <summary>Divisor of a run's forward speed in <see cref="GetAdjustedMaxSpeed"/> (retail <c>current_speed_factor</c>,
     /// 1 at creation).</summary>
-    public float CurrentSpeedFactor { get; set; } = 1f;
+    /// <exception cref="System.ArgumentException">The value is not finite and positive (state unchanged).</exception>
+    public float CurrentSpeedFactor
+    {
+        get => _currentSpeedFactor;
+        set => _currentSpeedFactor = float.IsFinite(value) && value > 0f
+            ? value
+            : throw new System.ArgumentException("The speed factor must be finite and positive.", nameof(value));
+    }
+
+    private float _currentSpeedFactor = 1f;
 
     /// <summary>A jump is being charged from standing still: forward and side-step commands are recorded but not played
     /// until the jump (retail <c>standing_longjump</c>).</summary>
@@ -88,7 +97,14 @@ public sealed partial class MotionInterp : IMotionInterpreter
     public uint ServerActionStamp { get; internal set; }
 
     /// <summary>The run rate last received (retail <c>my_run_rate</c>, 1 at creation): used when the weenie cannot say.</summary>
-    public float MyRunRate { get; set; } = 1f;
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float MyRunRate
+    {
+        get => _myRunRate;
+        set => _myRunRate = MotionChecks.Finite(value);
+    }
+
+    private float _myRunRate = 1f;
 
     /// <summary>Started motions not yet finished.</summary>
     public PendingMotions PendingMotions { get; } = new();

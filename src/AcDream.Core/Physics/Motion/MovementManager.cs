@@ -107,11 +107,13 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Starts a command as the player gives it (<see cref="MotionInterp.DoMotion"/>), then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
     /// <remarks>The object's <see cref="Objects.PhysicsObj.LastMoveWasAutonomous"/> becomes true first, as
     /// <c>CPhysicsObj::DoMotion</c> (acclient.c:317314) sets it: this client's own commands.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 1 -> CMotionInterp::PerformMovement (acclient.c:344669)
     public int DoMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         MarkAutonomous();
         Activate();
         int r = GetMinterp().DoMotion(motion, p);
@@ -121,9 +123,11 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Starts an interpreted motion (<see cref="MotionInterp.DoInterpretedMotion"/>), then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 2
     public int DoInterpretedMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         Activate();
         int r = GetMinterp().DoInterpretedMotion(motion, p);
         PhysicsObj?.CheckForCompletedMotions();
@@ -132,10 +136,12 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Stops a command as the player gives it (<see cref="MotionInterp.StopMotion"/>), then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
     /// <remarks>Marks the move autonomous first, as <c>CPhysicsObj::StopMotion</c> (acclient.c:317353) does.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 3
     public int StopMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         MarkAutonomous();
         Activate();
         int r = GetMinterp().StopMotion(motion, p);
@@ -145,9 +151,11 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Stops an interpreted motion, then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 4
     public int StopInterpretedMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         Activate();
         int r = GetMinterp().StopInterpretedMotion(motion, p);
         PhysicsObj?.CheckForCompletedMotions();

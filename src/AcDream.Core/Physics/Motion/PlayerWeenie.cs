@@ -9,15 +9,38 @@ namespace AcDream.Core.Physics.Motion;
 /// <para>Retail adds the skill's base, training, augmentation and enchantment terms before these formulas
 /// (<c>CACQualities::InqRunRate</c>, acclient.c:443695); here <see cref="RunSkill"/> and <see cref="JumpSkill"/> are those
 /// sums, the skill as the character sheet shows it.</para>
-/// <para>Plain properties, no validation needed: every value gives a finite rate (negative burdens count as none).</para>
+/// <para>Skills must not be negative (a skill of -200 or -1300 would divide by zero); every other value gives a finite
+/// rate (negative burdens count as none, no strength gives load 3).</para>
 /// </remarks>
 public sealed class PlayerWeenie : IMotionWeenie
 {
     /// <summary>Effective run skill (retail skill 0x18). 200 gives a run rate of 2.375.</summary>
-    public int RunSkill { get; set; }
+    /// <exception cref="System.ArgumentOutOfRangeException">The value is negative (unchanged).</exception>
+    public int RunSkill
+    {
+        get => _runSkill;
+        set
+        {
+            System.ArgumentOutOfRangeException.ThrowIfNegative(value);
+            _runSkill = value;
+        }
+    }
+
+    private int _runSkill;
 
     /// <summary>Effective jump skill (retail skill 0x16).</summary>
-    public int JumpSkill { get; set; }
+    /// <exception cref="System.ArgumentOutOfRangeException">The value is negative (unchanged).</exception>
+    public int JumpSkill
+    {
+        get => _jumpSkill;
+        set
+        {
+            System.ArgumentOutOfRangeException.ThrowIfNegative(value);
+            _jumpSkill = value;
+        }
+    }
+
+    private int _jumpSkill;
 
     /// <summary>Strength attribute (retail attribute 1; 10 when the client has none).</summary>
     public int Strength { get; set; } = 10;

@@ -23,7 +23,14 @@ public sealed class RawMotionState
     public HoldKey ForwardHoldKey { get; set; }
 
     /// <summary>Speed of the forward command.</summary>
-    public float ForwardSpeed { get; set; }
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float ForwardSpeed
+    {
+        get => _forwardSpeed;
+        set => _forwardSpeed = MotionChecks.Finite(value);
+    }
+
+    private float _forwardSpeed;
 
     /// <summary>The side-step command as given (0, SideStepRight or SideStepLeft).</summary>
     public uint SidestepCommand { get; set; }
@@ -32,7 +39,14 @@ public sealed class RawMotionState
     public HoldKey SidestepHoldKey { get; set; }
 
     /// <summary>Speed of the side-step.</summary>
-    public float SidestepSpeed { get; set; }
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float SidestepSpeed
+    {
+        get => _sidestepSpeed;
+        set => _sidestepSpeed = MotionChecks.Finite(value);
+    }
+
+    private float _sidestepSpeed;
 
     /// <summary>The turn command as given (0, TurnRight or TurnLeft).</summary>
     public uint TurnCommand { get; set; }
@@ -41,7 +55,14 @@ public sealed class RawMotionState
     public HoldKey TurnHoldKey { get; set; }
 
     /// <summary>Speed of the turn.</summary>
-    public float TurnSpeed { get; set; }
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float TurnSpeed
+    {
+        get => _turnSpeed;
+        set => _turnSpeed = MotionChecks.Finite(value);
+    }
+
+    private float _turnSpeed;
 
     /// <summary>The queued actions.</summary>
     public ActionList Actions { get; } = new();
