@@ -46,6 +46,8 @@ internal static class MotionReplayReport
         {
             new Case("+Brenwick (long-movement-run, 0x5000001D)", "long-movement-run", 0x5000001Du, double.PositiveInfinity),
             new Case("Ash (fellowship-one-vassal, 0x5000001E)", "fellowship-one-vassal", 0x5000001Eu, double.PositiveInfinity),
+            new Case("Bex (fellowship-two-monarch, 0x5000001F)", "fellowship-two-monarch", 0x5000001Fu, double.PositiveInfinity),
+            new Case("Caius (fellowship-three-vassal, 0x50000020)", "fellowship-three-vassal", 0x50000020u, double.PositiveInfinity),
         };
         var md = new StringBuilder();
         md.AppendLine("# Motion replay on real data");
@@ -88,8 +90,8 @@ internal static class MotionReplayReport
         md.AppendLine();
         md.AppendLine("![error while moving](motion-replay.svg)");
         md.AppendLine();
-        md.AppendLine("The plot shows the moving samples of +Brenwick (errors floored at 1 mm, log axis). Ash only turns in place and takes");
-        md.AppendLine("three jumps (no moving sample). In the last window (389-394.4 s) +Brenwick runs into a house entrance, where the real");
+        md.AppendLine("The plot shows the moving samples of +Brenwick (errors floored at 1 mm, log axis). The fellowship players mostly turn in");
+        md.AppendLine("place (Ash walks 1.65 m and jumps three times, Caius walks 1.7 m, Bex stays put): few or no moving samples. In the last window (389-394.4 s) +Brenwick runs into a house entrance, where the real");
         md.AppendLine("client was stopped by the building and teleported inside at 394.34 s: the replay ground has no building, so the body");
         md.AppendLine("driven by motion runs on through it until the next report pulls it back; that window holds both runs' maxima.");
         Directory.CreateDirectory(outDir);

@@ -27,6 +27,7 @@ public static class MovementEvent
     {
         ArgumentNullException.ThrowIfNull(obj);
         ArgumentNullException.ThrowIfNull(state);
+        // non-retail: the interpreter is created when absent (retail returns without it)
         if (obj.MakeMovementManager(true) is not MovementManager mm)
         {
             return false;
