@@ -25,6 +25,11 @@ public static class Program
             return Report.ReplayReport.Run(args.AsSpan(1));
         }
 
+        if (args.Length > 0 && string.Equals(args[0], "motion-replay", StringComparison.OrdinalIgnoreCase))
+        {
+            return Report.MotionReplayReport.Run(args.AsSpan(1));
+        }
+
         if (args.Length > 0 && string.Equals(args[0], "scene-ab", StringComparison.OrdinalIgnoreCase))
         {
             return Report.SceneAbReport.Run(args.AsSpan(1));

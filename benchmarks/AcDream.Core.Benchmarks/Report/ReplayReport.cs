@@ -86,7 +86,7 @@ internal static class ReplayReport
         return 0;
     }
 
-    private static string FindRepoRoot()
+    internal static string FindRepoRoot()
     {
         string? dir = AppContext.BaseDirectory;
         while (dir is not null && !File.Exists(Path.Combine(dir, "Directory.Build.props")))

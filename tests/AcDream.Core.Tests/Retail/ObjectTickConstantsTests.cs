@@ -137,7 +137,8 @@ public class ObjectTickConstantsTests
         PhysicsObj obj = world.CreateObject();
         IMotionInterpreter? minterp = obj.GetMinterp();
         Assert.NotNull(minterp);
-        Assert.IsType<BasicMovementManager>(obj.MovementManager);
+        Assert.IsType<AcDream.Core.Physics.Motion.MovementManager>(obj.MovementManager);
+        Assert.IsType<AcDream.Core.Physics.Motion.MotionInterp>(minterp);
         Assert.Equal(4.0, minterp!.GetMaxSpeed());
         Assert.Equal(4.0, minterp.GetAdjustedMaxSpeed());
         Assert.Equal(4.0, BasicMovementManager.NoWeenieMaxSpeed);

@@ -96,6 +96,7 @@ public class WakeRuleTests
         ["HandleUpdateTarget(TargetInfo)"] = (null, f => f.Obj.HandleUpdateTarget(default)),
         ["InterpolateTo(Position, Boolean)"] = (null, f => f.Obj.InterpolateTo(Near(0.5f), false)),
         ["MakePositionManager()"] = (null, f => f.Obj.MakePositionManager()),
+        ["MakeMovementManager(Boolean)"] = (null, f => f.Obj.MakeMovementManager(true)),
         ["MoveOrTeleport(Position, UInt16, Boolean)"] = (null, f => f.Obj.MoveOrTeleport(Near(0.5f), 0, true)),
         ["ProcessFPHook(PhysicsHookType, Single, UInt32)"] = (null, f => f.Obj.ProcessFPHook(PhysicsHookType.Translucency, 0.5f, 0u)),
         ["SetAcceleration(Vector3)"] = (null, f => f.Obj.SetAcceleration(new Vector3(0f, 0f, -1f))),

@@ -21,18 +21,18 @@ public sealed partial class PhysicsObj
     /// <summary>
     /// The motion interpreter, creating a movement manager first when the object has none (retail <c>get_minterp</c>:
     /// <c>MovementManager::Create</c> + <c>EnterDefaultState</c>, then activation). The world's
-    /// <see cref="PhysicsWorld.MovementManagerFactory"/> creates it, or a <see cref="BasicMovementManager"/> when unset.
+    /// <see cref="PhysicsWorld.MovementManagerFactory"/> creates it, or the retail <see cref="Motion.MovementManager"/> when
+    /// unset.
     /// </summary>
     // retail: CPhysicsObj::get_minterp (acclient.c:319279)
     public IMotionInterpreter? GetMinterp()
     {
         if (MovementManager is null)
         {
-            MovementManager = World.MovementManagerFactory?.Create(this) ?? new BasicMovementManager();
-            ActivateIfNotStatic();
+            MakeMovementManager(true);
         }
 
-        return MovementManager.MotionInterpreter;
+        return MovementManager!.MotionInterpreter;
     }
 
     /// <summary>True while the movement manager runs a move-to.</summary>

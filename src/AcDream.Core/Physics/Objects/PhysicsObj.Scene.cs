@@ -37,8 +37,10 @@ public sealed partial class PhysicsObj
     /// <item><see cref="TranslucencyOriginal"/>: read only by <see cref="SetTranslucencyInternal"/>, which wakes the object
     /// before it reads it.</item>
     /// <item><see cref="Weenie"/>: read only during sweeps (the object's own, which a dormant object never runs, or another
-    /// object's sweep against it, which reads the field as it is whether or not the object is dormant).</item>
-    /// <item><see cref="LastMoveWasAutonomous"/>: kept for the client; nothing in the physics reads it.</item>
+    /// object's sweep against it, which reads the field as it is whether or not the object is dormant) and when a movement
+    /// manager is created (which wakes the object).</item>
+    /// <item><see cref="LastMoveWasAutonomous"/>: read only by the motion interpreter, inside calls that wake the object
+    /// themselves (its commands and ground events), never by update_object.</item>
     /// <item><see cref="NewerEvent"/>: writes only the network timestamps (update_times), read only by the network handlers,
     /// never by update_object; the handlers that act on a newer event wake the object.</item>
     /// <item><see cref="AddShadowsToCells"/>, <see cref="RemoveShadowsFromCells"/>: the cells' shadow lists, read only by

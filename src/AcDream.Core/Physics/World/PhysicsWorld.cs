@@ -98,8 +98,8 @@ public sealed partial class PhysicsWorld
     /// <summary>Optional listener told after the player's update.</summary>
     public IPlayerPhysicsListener? PlayerListener { get; set; }
 
-    /// <summary>Optional factory for movement managers created on demand (<c>get_minterp</c>); when null a
-    /// <see cref="BasicMovementManager"/> is created.</summary>
+    /// <summary>Optional factory for movement managers created on demand (<c>get_minterp</c>); when null
+    /// the retail <see cref="Motion.MovementManager"/> is created.</summary>
     public IMovementManagerFactory? MovementManagerFactory { get; set; }
 
     /// <summary>Optional client callback that plays physics scripts (CallPES hooks).</summary>

@@ -31,6 +31,13 @@ public interface IPartArray
     /// </summary>
     ReadOnlySpan<Sphere> Spheres { get; }
 
+    /// <summary>
+    /// The motion table the motion interpreter plays motions on (retail: the part array's motion-table manager), or null
+    /// when the object has none (the interpreter's motions then fail with <see cref="Motion.MotionError.NoMotionTable"/>
+    /// and only its states change). <see cref="Update"/> moves the body by its velocity and omega.
+    /// </summary>
+    Motion.IMotionTable? MotionTable => null;
+
     /// <summary>Number of parts, for <c>UpdateChild</c>'s part lookup.</summary>
     int NumParts { get; }
 

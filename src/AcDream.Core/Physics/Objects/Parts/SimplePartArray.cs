@@ -128,7 +128,27 @@ public sealed partial class SimplePartArray : IPartArray
 
     /// <summary>True when the sequence has no velocity and no omega: <see cref="Update"/> leaves the offset at the identity.
     /// (<see cref="HandleMovementCount"/> counts the visits the scene actually makes.)</summary>
-    public bool IsIdle => _sequenceVelocity == Vector3.Zero && _sequenceOmega == Vector3.Zero;
+    public bool IsIdle => _motionTable is null
+        ? _sequenceVelocity == Vector3.Zero && _sequenceOmega == Vector3.Zero
+        : _motionTable.Velocity == Vector3.Zero && _motionTable.Omega == Vector3.Zero;
+
+    /// <summary>
+    /// The motion table (null by default). When set, it drives the sequence: <see cref="Update"/> moves the body by the
+    /// table's velocity and omega instead of <see cref="SequenceVelocity"/> and <see cref="SequenceOmega"/>. Set a
+    /// <see cref="Motion.RetailSpeedMotionTable"/> for a creature that should walk, run and turn at retail speeds without
+    /// the real motion tables.
+    /// </summary>
+    public Motion.IMotionTable? MotionTable
+    {
+        get => _motionTable;
+        set
+        {
+            Owner?.Touch();
+            _motionTable = value;
+        }
+    }
+
+    private Motion.IMotionTable? _motionTable;
 
     /// <summary>The object this part array belongs to (set when assigned to <see cref="PhysicsObj.PartArray"/>), woken when the
     /// sequence changes.</summary>
@@ -178,10 +198,10 @@ public sealed partial class SimplePartArray : IPartArray
             s = -s;
         }
 
-        Vector3 v = SequenceVelocity;
+        Vector3 v = _motionTable is null ? _sequenceVelocity : _motionTable.Velocity;
         Vector3 o = offsetFrame.Origin;
         offsetFrame.Origin = new Vector3((float)(s * v.X + o.X), (float)(s * v.Y + o.Y), (float)(s * v.Z + o.Z));
-        Vector3 w = SequenceOmega;
+        Vector3 w = _motionTable is null ? _sequenceOmega : _motionTable.Omega;
         offsetFrame.Rotate(new Vector3((float)(s * w.X), (float)(s * w.Y), (float)(s * w.Z)));
     }
 
@@ -197,12 +217,21 @@ public sealed partial class SimplePartArray : IPartArray
     public void SetCellId(uint cellId) => CellId = cellId;
 
     /// <inheritdoc />
-    public void HandleMovement() => HandleMovementCount++;
+    /// <remarks>With a motion table, its finished motions are reported to the owner's movement manager (retail
+    /// <c>CPartArray::HandleMovement</c> -> <c>MotionTableManager::UseTime</c>).</remarks>
+    public void HandleMovement()
+    {
+        HandleMovementCount++;
+        if (_motionTable is not null)
+        {
+            Owner?.CheckForCompletedMotions();
+        }
+    }
 
     /// <inheritdoc />
-    public void HandleEnterWorld()
-    {
-    }
+    /// <remarks>The motion table drops its link animations (retail <c>CPartArray::HandleEnterWorld</c>, which
+    /// <c>CPhysicsObj::RemoveLinkAnimations</c> calls).</remarks>
+    public void HandleEnterWorld() => _motionTable?.RemoveLinkAnimations();
 
     /// <inheritdoc />
     public Frame GetPartFrame(int index) => _frame;

@@ -1,8 +1,9 @@
 namespace AcDream.Core.Physics.Objects.Seams;
 
 /// <summary>
-/// The movement manager a world creates on demand when no <see cref="IMovementManagerFactory"/> is set: a movement
-/// manager with no weenie object and no motion table. Its interpreter answers retail's no-weenie speeds.
+/// A stand-in movement manager with no motion interpreter: it answers retail's no-weenie speeds and ignores the ground
+/// events. The world creates the retail <see cref="Motion.MovementManager"/> by default; a client or test that wants an
+/// object without motion installs this one through an <see cref="IMovementManagerFactory"/>.
 /// </summary>
 public sealed class BasicMovementManager : IMovementManager, IMotionInterpreter
 {

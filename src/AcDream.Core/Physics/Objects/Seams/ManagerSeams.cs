@@ -28,6 +28,12 @@ public interface IMovementManager
     void CancelMoveTo(uint error)
     {
     }
+
+    /// <summary>The part array's motion table finished <paramref name="motion"/> (retail <c>MovementManager::MotionDone</c>,
+    /// reached from <c>CPhysicsObj::MotionDone</c>).</summary>
+    void MotionDone(uint motion, bool success)
+    {
+    }
 }
 
 /// <summary>Seam to the motion interpreter's speed queries (retail <c>CMotionInterp</c>).</summary>

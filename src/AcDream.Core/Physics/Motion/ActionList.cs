@@ -1,0 +1,89 @@
+namespace AcDream.Core.Physics.Motion;
+
+/// <summary>One queued action of a motion state (retail <c>ActionNode</c>).</summary>
+/// <param name="Action">The action command.</param>
+/// <param name="Speed">Its speed.</param>
+/// <param name="Stamp">Its server action stamp (15 bits used).</param>
+/// <param name="Autonomous">True when this client started it.</param>
+public readonly record struct ActionNode(uint Action, float Speed, uint Stamp, bool Autonomous);
+
+/// <summary>
+/// A motion state's queue of actions (retail <c>LList&lt;ActionNode&gt;</c>), first in first out, in a fixed array so the
+/// tick never allocates.
+/// </summary>
+/// <remarks>
+/// Retail's list is unbounded. <c>DoMotion</c> refuses a seventh action, so a list seldom holds more than six; this one holds
+/// <see cref="Capacity"/> and ignores an action added to a full list.
+/// </remarks>
+public sealed class ActionList
+{
+    /// <summary>Most actions held. Non-retail: retail's list grows without bound.</summary>
+    public const int Capacity = 16;
+
+    private readonly ActionNode[] _nodes = new ActionNode[Capacity];
+    private int _head;
+
+    /// <summary>Number of queued actions (retail <c>GetNumActions</c>).</summary>
+    public int Count { get; private set; }
+
+    /// <summary>The action at queue position <paramref name="i"/> (0 = oldest).</summary>
+    /// <exception cref="System.ArgumentOutOfRangeException"><paramref name="i"/> is not below <see cref="Count"/>.</exception>
+    public ActionNode this[int i]
+    {
+        get
+        {
+            System.ArgumentOutOfRangeException.ThrowIfNegative(i);
+            System.ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(i, Count);
+            return _nodes[(_head + i) % Capacity];
+        }
+    }
+
+    /// <summary>Appends an action at the tail (ignored when the list is full).</summary>
+    public void Add(in ActionNode node)
+    {
+        // non-retail: a bounded list (retail allocates a node per action)
+        if (Count == Capacity)
+        {
+            return;
+        }
+
+        _nodes[(_head + Count) % Capacity] = node;
+        Count++;
+    }
+
+    /// <summary>Removes the oldest action and returns its command, or 0 when empty (retail <c>RemoveAction</c>).</summary>
+    public uint RemoveFirst()
+    {
+        if (Count == 0)
+        {
+            return 0;
+        }
+
+        uint action = _nodes[_head].Action;
+        _head = (_head + 1) % Capacity;
+        Count--;
+        return action;
+    }
+
+    /// <summary>Empties the list (retail <c>Destroy</c>).</summary>
+    public void Clear()
+    {
+        _head = 0;
+        Count = 0;
+    }
+
+    /// <summary>Replaces the contents with a copy of <paramref name="other"/>'s.</summary>
+    public void CopyFrom(ActionList other)
+    {
+        if (ReferenceEquals(this, other))
+        {
+            return;
+        }
+
+        Clear();
+        for (int i = 0; i < other.Count; i++)
+        {
+            Add(other[i]);
+        }
+    }
+}

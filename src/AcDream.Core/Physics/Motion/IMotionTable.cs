@@ -1,0 +1,49 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics.Motion;
+
+/// <summary>
+/// The seam between the motion interpreter and the animation: an object's motion-table manager, its motion table and the
+/// sequence they drive (retail <c>CPartArray::DoInterpretedMotion</c> -> <c>MotionTableManager::PerformMovement</c> ->
+/// <c>CMotionTable::GetObjectSequence</c>, which sets the sequence's velocity and omega from the motion data). The part
+/// array exposes it as <see cref="Objects.Parts.IPartArray.MotionTable"/> and moves the body by
+/// <see cref="Velocity"/> and <see cref="Omega"/> each step (<c>CSequence::apply_physics</c>).
+/// <see cref="RetailSpeedMotionTable"/> is the built-in one; a client with the real motion tables plugs in its own.
+/// </summary>
+/// <remarks>Called inside the tick: implementations must not allocate.</remarks>
+public interface IMotionTable
+{
+    /// <summary>Starts <paramref name="motion"/> (a style, substate, modifier or action) at <c>p.Speed</c>.</summary>
+    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    // retail seam: CPartArray::DoInterpretedMotion (acclient.c:326017)
+    int DoInterpretedMotion(uint motion, in MovementParameters p);
+
+    /// <summary>Stops <paramref name="motion"/>.</summary>
+    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    // retail seam: CPartArray::StopInterpretedMotion (acclient.c:326053)
+    int StopInterpretedMotion(uint motion, in MovementParameters p);
+
+    /// <summary>Stops everything: back to the style's default substate with no modifiers.</summary>
+    /// <returns>0 on success.</returns>
+    // retail seam: CPartArray::StopCompletelyInternal (acclient.c:326089)
+    int StopCompletely();
+
+    /// <summary>Puts the table in its default state (non-combat, Ready, nothing moving).</summary>
+    // retail seam: CPartArray::InitializeMotionTables
+    void InitializeMotionTables();
+
+    /// <summary>Drops the link (transition) animations still playing.</summary>
+    // retail seam: CPartArray::HandleEnterWorld (acclient.c:325115), which CPhysicsObj::RemoveLinkAnimations calls
+    void RemoveLinkAnimations();
+
+    /// <summary>Takes the oldest started motion whose animations have finished, in start order.</summary>
+    /// <returns>False when none has finished.</returns>
+    // retail seam: MotionTableManager::CheckForCompletedMotions (acclient.c:329959)
+    bool TryTakeCompletedMotion(out uint motion, out bool success);
+
+    /// <summary>The sequence's velocity in the object's local axes, m/s (retail <c>CSequence::velocity</c>).</summary>
+    Vector3 Velocity { get; }
+
+    /// <summary>The sequence's angular velocity in the object's local axes, rad/s (retail <c>CSequence::omega</c>).</summary>
+    Vector3 Omega { get; }
+}

@@ -1,0 +1,165 @@
+namespace AcDream.Core.Physics.Motion;
+
+/// <summary>
+/// The motion an object is actually performing, after the hold key and the backwards, side-step and turn conversions
+/// (retail <c>InterpretedMotionState</c>, PORTAL/canim/CMInterpPrim.c). This is what a MovementEvent carries for a
+/// remote object.
+/// </summary>
+public sealed class InterpretedMotionState
+{
+    /// <summary>Creates the default state: non-combat style, <see cref="MotionCommand.Ready"/>, no side-step, no turn,
+    /// every speed 1.</summary>
+    // retail: InterpretedMotionState::InterpretedMotionState (acclient.c:332641)
+    public InterpretedMotionState() => Reset();
+
+    /// <summary>The stance (style command).</summary>
+    public uint CurrentStyle { get; set; }
+
+    /// <summary>The forward substate (Ready, WalkForward, RunForward, Falling...).</summary>
+    public uint ForwardCommand { get; set; }
+
+    /// <summary>Speed of <see cref="ForwardCommand"/> (negative for backwards; the run rate when running).</summary>
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float ForwardSpeed
+    {
+        get => _forwardSpeed;
+        set => _forwardSpeed = MotionChecks.Finite(value);
+    }
+
+    private float _forwardSpeed;
+
+    /// <summary>The side-step modifier (0 or <see cref="MotionCommand.SideStepRight"/>).</summary>
+    public uint SidestepCommand { get; set; }
+
+    /// <summary>Speed of the side-step (negative is left).</summary>
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float SidestepSpeed
+    {
+        get => _sidestepSpeed;
+        set => _sidestepSpeed = MotionChecks.Finite(value);
+    }
+
+    private float _sidestepSpeed;
+
+    /// <summary>The turn modifier (0 or <see cref="MotionCommand.TurnRight"/>).</summary>
+    public uint TurnCommand { get; set; }
+
+    /// <summary>Speed of the turn (negative is left).</summary>
+    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    public float TurnSpeed
+    {
+        get => _turnSpeed;
+        set => _turnSpeed = MotionChecks.Finite(value);
+    }
+
+    private float _turnSpeed;
+
+    /// <summary>The queued actions.</summary>
+    public ActionList Actions { get; } = new();
+
+    /// <summary>Puts the state back to its constructed default (and empties the actions).</summary>
+    public void Reset()
+    {
+        CurrentStyle = MotionCommand.NonCombat;
+        ForwardCommand = MotionCommand.Ready;
+        ForwardSpeed = 1f;
+        SidestepCommand = 0;
+        SidestepSpeed = 1f;
+        TurnCommand = 0;
+        TurnSpeed = 1f;
+        Actions.Clear();
+    }
+
+    /// <summary>Copies the style, the three commands and their speeds (not the actions).</summary>
+    // retail: InterpretedMotionState::copy_movement_from (acclient.c:332524)
+    public void CopyMovementFrom(InterpretedMotionState rhs)
+    {
+        CurrentStyle = rhs.CurrentStyle;
+        ForwardCommand = rhs.ForwardCommand;
+        ForwardSpeed = rhs.ForwardSpeed;
+        SidestepCommand = rhs.SidestepCommand;
+        SidestepSpeed = rhs.SidestepSpeed;
+        TurnCommand = rhs.TurnCommand;
+        TurnSpeed = rhs.TurnSpeed;
+    }
+
+    /// <summary>Copies everything, the actions included.</summary>
+    // retail: InterpretedMotionState::operator= (acclient.c:332682)
+    public void CopyFrom(InterpretedMotionState rhs)
+    {
+        CopyMovementFrom(rhs);
+        Actions.CopyFrom(rhs.Actions);
+    }
+
+    /// <summary>Records a started motion: turn, side-step, substate, style or action.</summary>
+    // retail: InterpretedMotionState::ApplyMotion (acclient.c:332758)
+    public void ApplyMotion(uint motion, in MovementParameters p)
+    {
+        if (motion == MotionCommand.TurnRight)
+        {
+            TurnCommand = MotionCommand.TurnRight;
+            TurnSpeed = p.Speed;
+        }
+        else if (motion == MotionCommand.SideStepRight)
+        {
+            SidestepCommand = MotionCommand.SideStepRight;
+            SidestepSpeed = p.Speed;
+        }
+        else if ((motion & MotionCommand.SubstateMask) != 0)
+        {
+            ForwardCommand = motion;
+            ForwardSpeed = p.Speed;
+        }
+        else if ((motion & MotionCommand.StyleMask) == 0)
+        {
+            if ((motion & MotionCommand.ActionMask) != 0)
+            {
+                AddAction(motion, p.Speed, p.ActionStamp, p.Has(MovementParameterFlags.Autonomous));
+            }
+        }
+        else
+        {
+            ForwardCommand = MotionCommand.Ready;
+            CurrentStyle = motion;
+        }
+    }
+
+    /// <summary>Records a stopped motion.</summary>
+    // retail: InterpretedMotionState::RemoveMotion (acclient.c:332536)
+    public void RemoveMotion(uint motion)
+    {
+        if (motion == MotionCommand.TurnRight)
+        {
+            TurnCommand = 0;
+        }
+        else if (motion == MotionCommand.SideStepRight)
+        {
+            SidestepCommand = 0;
+        }
+        else if ((motion & MotionCommand.SubstateMask) != 0)
+        {
+            if (motion == ForwardCommand)
+            {
+                ForwardCommand = MotionCommand.Ready;
+                ForwardSpeed = 1f;
+            }
+        }
+        else if ((motion & MotionCommand.StyleMask) != 0 && motion == CurrentStyle)
+        {
+            CurrentStyle = MotionCommand.NonCombat;
+        }
+    }
+
+    /// <summary>Queues an action.</summary>
+    // retail: InterpretedMotionState::AddAction (acclient.c:332724)
+    public void AddAction(uint action, float speed, uint stamp, bool autonomous) =>
+        Actions.Add(new ActionNode(action, speed, stamp, autonomous));
+
+    /// <summary>Removes the oldest action and returns its command (0 when none).</summary>
+    // retail: InterpretedMotionState::RemoveAction (acclient.c:332788)
+    public uint RemoveAction() => Actions.RemoveFirst();
+
+    /// <summary>Number of queued actions.</summary>
+    // retail: InterpretedMotionState::GetNumActions (acclient.c:332814)
+    public int GetNumActions() => Actions.Count;
+}

@@ -1,0 +1,576 @@
+using AcDream.Core.Physics.Objects;
+
+namespace AcDream.Core.Physics.Motion;
+
+public sealed partial class MotionInterp
+{
+    /// <summary>
+    /// Starts a command as the player gives it: sets the hold key when asked, converts the command
+    /// (<see cref="AdjustMotion"/>), refuses postures and emotes outside the non-combat style and a seventh action, plays
+    /// the result (<see cref="DoInterpretedMotion"/>) and records the command in the raw state.
+    /// </summary>
+    /// <returns>0 on success, else a <see cref="MotionError"/> number (nothing recorded).</returns>
+    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    // retail: CMotionInterp::DoMotion (acclient.c:344599)
+    public int DoMotion(uint motion, in MovementParameters p)
+    {
+        MotionChecks.Check(p);
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null)
+        {
+            return MotionError.NoPhysicsObject;
+        }
+
+        obj.Touch();
+        MovementParameters adjusted = p;
+        if (p.Has(MovementParameterFlags.CancelMoveTo))
+        {
+            obj.CancelMoveTo();
+        }
+
+        if (p.Has(MovementParameterFlags.SetHoldKey))
+        {
+            SetHoldKey(p.HoldKeyToApply, p.Has(MovementParameterFlags.CancelMoveTo));
+        }
+
+        uint adjustedMotion = motion;
+        AdjustMotion(ref adjustedMotion, ref adjusted.Speed, p.HoldKeyToApply);
+        if (InterpretedState.CurrentStyle != MotionCommand.NonCombat)
+        {
+            switch (motion)
+            {
+                case MotionCommand.Crouch:
+                    return MotionError.CantCrouchInCombat;
+                case MotionCommand.Sitting:
+                    return MotionError.CantSitInCombat;
+                case MotionCommand.Sleeping:
+                    return MotionError.CantLieDownInCombat;
+            }
+
+            if ((motion & MotionCommand.ChatEmoteMask) != 0)
+            {
+                return MotionError.CantChatEmoteInCombat;
+            }
+        }
+
+        if ((motion & MotionCommand.ActionMask) != 0 && InterpretedState.GetNumActions() >= 6)
+        {
+            return MotionError.TooManyActions;
+        }
+
+        int result = DoInterpretedMotion(adjustedMotion, adjusted);
+        if (result == MotionError.None && p.Has(MovementParameterFlags.ModifyRawState))
+        {
+            RawState.ApplyMotion(motion, p);
+        }
+
+        return result;
+    }
+
+    /// <summary>Stops a command as the player gives it: converts it as <see cref="DoMotion"/> does, stops the result and
+    /// removes the command from the raw state.</summary>
+    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    // retail: CMotionInterp::StopMotion (acclient.c:344080)
+    public int StopMotion(uint motion, in MovementParameters p)
+    {
+        MotionChecks.Check(p);
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null)
+        {
+            return MotionError.NoPhysicsObject;
+        }
+
+        obj.Touch();
+        if (p.Has(MovementParameterFlags.CancelMoveTo))
+        {
+            obj.CancelMoveTo();
+        }
+
+        MovementParameters adjusted = p;
+        uint adjustedMotion = motion;
+        AdjustMotion(ref adjustedMotion, ref adjusted.Speed, p.HoldKeyToApply);
+        int result = StopInterpretedMotion(adjustedMotion, adjusted);
+        if (result == MotionError.None && p.Has(MovementParameterFlags.ModifyRawState))
+        {
+            RawState.RemoveMotion(motion);
+        }
+
+        return result;
+    }
+
+    /// <summary>
+    /// Plays an interpreted motion: on the ground (or for a motion allowed in the air) it goes to the motion table, is
+    /// queued with the jump error it imposes, and is recorded in the interpreted state; in the air (or, while a standing
+    /// long jump charges, a walk, run or side-step) it is only recorded; an action in the air fails with 0x24.
+    /// </summary>
+    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    // retail: CMotionInterp::DoInterpretedMotion (acclient.c:343974)
+    public int DoInterpretedMotion(uint motion, in MovementParameters p)
+    {
+        MotionChecks.Check(p);
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null)
+        {
+            return MotionError.NoPhysicsObject;
+        }
+
+        obj.Touch();
+        int result;
+        if (ContactAllowsMove(motion))
+        {
+            if (!StandingLongJump || (motion != MotionCommand.WalkForward && motion != MotionCommand.RunForward
+                                      && motion != MotionCommand.SideStepRight))
+            {
+                if (motion == MotionCommand.Dead)
+                {
+                    obj.RemoveLinkAnimations();
+                }
+
+                result = obj.DoInterpretedMotion(motion, p);
+                if (result == MotionError.None)
+                {
+                    int jumpError;
+                    if (p.Has(MovementParameterFlags.DisableJumpDuringLink))
+                    {
+                        jumpError = MotionError.YouCantJumpFromThisPosition;
+                    }
+                    else
+                    {
+                        jumpError = MotionAllowsJump(motion);
+                        if (jumpError == MotionError.None && (motion & MotionCommand.ActionMask) == 0)
+                        {
+                            jumpError = MotionAllowsJump(InterpretedState.ForwardCommand);
+                        }
+                    }
+
+                    AddToQueue(p.ContextId, motion, jumpError);
+                    if (p.Has(MovementParameterFlags.ModifyInterpretedState))
+                    {
+                        InterpretedState.ApplyMotion(motion, p);
+                    }
+                }
+            }
+            else
+            {
+                result = RecordOnly(motion, p);
+            }
+        }
+        else if ((motion & MotionCommand.ActionMask) == 0)
+        {
+            result = RecordOnly(motion, p);
+        }
+        else
+        {
+            result = MotionError.YouCantJumpWhileInTheAir;
+        }
+
+        if (obj.CellId == 0)
+        {
+            obj.RemoveLinkAnimations();
+        }
+
+        return result;
+    }
+
+    private int RecordOnly(uint motion, in MovementParameters p)
+    {
+        if (p.Has(MovementParameterFlags.ModifyInterpretedState))
+        {
+            InterpretedState.ApplyMotion(motion, p);
+        }
+
+        return MotionError.None;
+    }
+
+    /// <summary>Stops an interpreted motion: through the motion table when it may move (queueing a Ready), otherwise only
+    /// in the interpreted state.</summary>
+    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    // retail: CMotionInterp::StopInterpretedMotion (acclient.c:344033)
+    public int StopInterpretedMotion(uint motion, in MovementParameters p)
+    {
+        MotionChecks.Check(p);
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null)
+        {
+            return MotionError.NoPhysicsObject;
+        }
+
+        obj.Touch();
+        int result;
+        if (!ContactAllowsMove(motion)
+            || (StandingLongJump && (motion == MotionCommand.WalkForward || motion == MotionCommand.RunForward
+                                     || motion == MotionCommand.SideStepRight)))
+        {
+            if (p.Has(MovementParameterFlags.ModifyInterpretedState))
+            {
+                InterpretedState.RemoveMotion(motion);
+            }
+
+            result = MotionError.None;
+        }
+        else
+        {
+            result = obj.StopInterpretedMotion(motion, p);
+            if (result == MotionError.None)
+            {
+                AddToQueue(p.ContextId, MotionCommand.Ready, MotionError.None);
+                if (p.Has(MovementParameterFlags.ModifyInterpretedState))
+                {
+                    InterpretedState.RemoveMotion(motion);
+                }
+            }
+        }
+
+        if (obj.CellId == 0)
+        {
+            obj.RemoveLinkAnimations();
+        }
+
+        return result;
+    }
+
+    /// <summary>Stops everything: both states back to Ready with no side-step or turn, the motion table stopped, a Ready
+    /// queued with the jump error of the motion that was playing.</summary>
+    /// <returns>0, or <see cref="MotionError.NoPhysicsObject"/>.</returns>
+    // retail: CMotionInterp::StopCompletely (acclient.c:343596)
+    public int StopCompletely()
+    {
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null)
+        {
+            return MotionError.NoPhysicsObject;
+        }
+
+        obj.Touch();
+        obj.CancelMoveTo();
+        int jumpError = MotionAllowsJump(InterpretedState.ForwardCommand);
+        RawState.ForwardCommand = MotionCommand.Ready;
+        RawState.ForwardSpeed = 1f;
+        RawState.SidestepCommand = 0;
+        RawState.TurnCommand = 0;
+        InterpretedState.ForwardCommand = MotionCommand.Ready;
+        InterpretedState.ForwardSpeed = 1f;
+        InterpretedState.SidestepCommand = 0;
+        InterpretedState.TurnCommand = 0;
+        obj.StopCompletelyInternal();
+        AddToQueue(0, MotionCommand.Ready, jumpError);
+        if (obj.CellId == 0)
+        {
+            obj.RemoveLinkAnimations();
+        }
+
+        return MotionError.None;
+    }
+
+    /// <summary>
+    /// Converts a command in place (only for a creature or an object with no weenie): turn left becomes turn right at
+    /// negative speed, walk backwards becomes walk forward at -0.65 speed, side-steps become side-step right at ±1.248
+    /// speed; then, with the run key (the given one, or the raw state's when <see cref="HoldKey.Invalid"/>),
+    /// <see cref="ApplyRunToCommand"/>. A run forward is left alone.
+    /// </summary>
+    // retail: CMotionInterp::adjust_motion (acclient.c:343745)
+    public void AdjustMotion(ref uint motion, ref float speed, HoldKey key)
+    {
+        if (_weenieObj is not null && !_weenieObj.IsCreature)
+        {
+            return;
+        }
+
+        switch (motion)
+        {
+            case MotionCommand.TurnLeft:
+                motion = MotionCommand.TurnRight;
+                speed = (float)(speed * -1.0);
+                break;
+            case MotionCommand.RunForward:
+                return;
+            case MotionCommand.WalkBackwards:
+                motion = MotionCommand.WalkForward;
+                speed = (float)(-(double)BackwardsFactor * speed);
+                break;
+            case MotionCommand.SideStepRight:
+                speed = (float)(SidestepSpeedRatio * speed);
+                break;
+            case MotionCommand.SideStepLeft:
+                motion = MotionCommand.SideStepRight;
+                speed = (float)(speed * -1.0);
+                speed = (float)(SidestepSpeedRatio * speed);
+                break;
+        }
+
+        if (key == HoldKey.Invalid)
+        {
+            key = RawState.CurrentHoldKey;
+        }
+
+        if (key == HoldKey.Run)
+        {
+            ApplyRunToCommand(ref motion, ref speed);
+        }
+    }
+
+    /// <summary>Applies the run key: a walk forward (at positive speed) becomes a run, every walk speed is multiplied by
+    /// the run rate; a turn is 1.5 times faster; a side-step is multiplied by the run rate and clamped to ±3.</summary>
+    // retail: CMotionInterp::apply_run_to_command (acclient.c:343438)
+    public void ApplyRunToCommand(ref uint motion, ref float speed)
+    {
+        double rate = RunRate();
+        switch (motion)
+        {
+            case MotionCommand.WalkForward:
+                if (speed > 0.0)
+                {
+                    motion = MotionCommand.RunForward;
+                }
+
+                speed = (float)(rate * speed);
+                break;
+            case MotionCommand.TurnRight:
+                speed = (float)(RunTurnFactor * speed);
+                break;
+            case MotionCommand.SideStepRight:
+                double v = rate * speed;
+                speed = (float)v;
+                if (System.Math.Abs(v) > MaxSidestepAnimRate)
+                {
+                    speed = v <= 0.0 ? (float)(-1.0 * MaxSidestepAnimRate) : (float)(1.0 * MaxSidestepAnimRate);
+                }
+
+                break;
+        }
+    }
+
+    /// <summary>Copies the raw state into the interpreted state, converts its three commands with their hold keys, and
+    /// applies the result.</summary>
+    // retail: CMotionInterp::apply_raw_movement (acclient.c:344258)
+    public void ApplyRawMovement(bool cancelMoveTo, bool disallowJump)
+    {
+        if (_physicsObj is null)
+        {
+            return;
+        }
+
+        RawMotionState r = RawState;
+        InterpretedMotionState s = InterpretedState;
+        s.CurrentStyle = r.CurrentStyle;
+        s.ForwardSpeed = r.ForwardSpeed;
+        s.ForwardCommand = r.ForwardCommand;
+        s.SidestepCommand = r.SidestepCommand;
+        s.SidestepSpeed = r.SidestepSpeed;
+        s.TurnCommand = r.TurnCommand;
+        s.TurnSpeed = r.TurnSpeed;
+
+        uint c = s.ForwardCommand;
+        float v = s.ForwardSpeed;
+        AdjustMotion(ref c, ref v, r.ForwardHoldKey);
+        s.ForwardCommand = c;
+        s.ForwardSpeed = v;
+
+        c = s.SidestepCommand;
+        v = s.SidestepSpeed;
+        AdjustMotion(ref c, ref v, r.SidestepHoldKey);
+        s.SidestepCommand = c;
+        s.SidestepSpeed = v;
+
+        c = s.TurnCommand;
+        v = s.TurnSpeed;
+        AdjustMotion(ref c, ref v, r.TurnHoldKey);
+        s.TurnCommand = c;
+        s.TurnSpeed = v;
+
+        ApplyInterpretedMovement(cancelMoveTo, disallowJump);
+    }
+
+    /// <summary>
+    /// Sends the interpreted state to the motion table without changing it: the style; then on the ground the forward
+    /// command and the side-step (or its stop), or Ready while a standing long jump charges; in the air Falling; then the
+    /// turn (or its stop). A run's speed becomes <see cref="MyRunRate"/>.
+    /// </summary>
+    // retail: CMotionInterp::apply_interpreted_movement (acclient.c:344146)
+    public void ApplyInterpretedMovement(bool cancelMoveTo, bool disallowJump)
+    {
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null)
+        {
+            return;
+        }
+
+        var p = new MovementParameters();
+        // 0xFFFD37FF clears set-hold-key, modify-interpreted-state, cancel-move-to and disable-jump-during-link.
+        p.Flags = (MovementParameterFlags)(((uint)p.Flags & 0xFFFD37FFu)
+                                           | (((cancelMoveTo ? 1u : 0u) | (4u * (disallowJump ? 1u : 0u))) << 15));
+        InterpretedMotionState s = InterpretedState;
+        if (s.ForwardCommand == MotionCommand.RunForward)
+        {
+            MyRunRate = s.ForwardSpeed;
+        }
+
+        DoInterpretedMotion(s.CurrentStyle, p);
+        if (ContactAllowsMove(s.ForwardCommand))
+        {
+            if (StandingLongJump)
+            {
+                p.Speed = 1f;
+                DoInterpretedMotion(MotionCommand.Ready, p);
+                StopInterpretedMotion(MotionCommand.SideStepRight, p);
+            }
+            else
+            {
+                p.Speed = s.ForwardSpeed;
+                DoInterpretedMotion(s.ForwardCommand, p);
+                uint side = s.SidestepCommand;
+                if (side != 0)
+                {
+                    p.Speed = s.SidestepSpeed;
+                    DoInterpretedMotion(side, p);
+                }
+                else
+                {
+                    StopInterpretedMotion(MotionCommand.SideStepRight, p);
+                }
+            }
+        }
+        else
+        {
+            p.Speed = 1f;
+            DoInterpretedMotion(MotionCommand.Falling, p);
+        }
+
+        uint turn = s.TurnCommand;
+        if (turn != 0)
+        {
+            p.Speed = s.TurnSpeed;
+            DoInterpretedMotion(turn, p);
+        }
+        else
+        {
+            if (obj.StopInterpretedMotion(MotionCommand.TurnRight, p) == MotionError.None)
+            {
+                AddToQueue(p.ContextId, MotionCommand.Ready, MotionError.None);
+                if (p.Has(MovementParameterFlags.ModifyInterpretedState))
+                {
+                    s.RemoveMotion(MotionCommand.TurnRight);
+                }
+            }
+
+            if (obj.CellId == 0)
+            {
+                obj.RemoveLinkAnimations();
+            }
+        }
+    }
+
+    /// <summary>
+    /// Takes a whole interpreted state from the server (a MovementEvent): the style into the raw state, the movement into
+    /// the interpreted state, applied (a jump disallowed while the previous motion forbade one); then each action newer
+    /// than <see cref="ServerActionStamp"/> (15-bit stamps compared with wrap-around) that is not this client's own.
+    /// </summary>
+    /// <returns>False when there is no physics object.</returns>
+    /// <exception cref="System.ArgumentNullException"><paramref name="newState"/> is null.</exception>
+    // retail: CMotionInterp::move_to_interpreted_state (acclient.c:344371)
+    public bool MoveToInterpretedState(InterpretedMotionState newState)
+    {
+        System.ArgumentNullException.ThrowIfNull(newState);
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null)
+        {
+            return false;
+        }
+
+        obj.Touch();
+        RawState.CurrentStyle = newState.CurrentStyle;
+        obj.CancelMoveTo();
+        bool disallowJump = MotionAllowsJump(InterpretedState.ForwardCommand) != MotionError.None;
+        InterpretedState.CopyMovementFrom(newState);
+        ApplyCurrentMovement(true, disallowJump);
+        var p = new MovementParameters();
+        ActionList actions = newState.Actions;
+        for (int i = 0; i < actions.Count; i++)
+        {
+            ActionNode a = actions[i];
+            uint stamp = a.Stamp & 0x7FFFu;
+            uint current = ServerActionStamp & 0x7FFFu;
+            uint diff = stamp <= current ? current - stamp : stamp - current;
+            bool newer = diff <= 0x3FFFu ? current < stamp : stamp < current;
+            if (newer && ((_weenieObj is not null && !_weenieObj.IsThePlayer) || !a.Autonomous))
+            {
+                ServerActionStamp = a.Stamp;
+                p.Speed = a.Speed;
+                p.Flags = a.Autonomous ? p.Flags | MovementParameterFlags.Autonomous : p.Flags & ~MovementParameterFlags.Autonomous;
+                DoInterpretedMotion(a.Action, p);
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>The motion at the head of the pending list finished: an action's stickiness and its queued entries go,
+    /// and the node is removed.</summary>
+    // retail: CMotionInterp::MotionDone (acclient.c:343640)
+    public void MotionDone(bool success)
+    {
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null || PendingMotions.Count == 0)
+        {
+            return;
+        }
+
+        if ((PendingMotions.Head.Motion & MotionCommand.ActionMask) != 0)
+        {
+            obj.UnstickFromObject();
+            InterpretedState.RemoveAction();
+            RawState.RemoveAction();
+        }
+
+        PendingMotions.RemoveHead();
+    }
+
+    /// <summary>The object left the world: every pending motion is finished as <see cref="MotionDone"/> does.</summary>
+    // retail: CMotionInterp::HandleExitWorld (acclient.c:343678)
+    public void HandleExitWorld()
+    {
+        while (_physicsObj is not null && PendingMotions.Count != 0)
+        {
+            MotionDone(true);
+        }
+    }
+
+    /// <summary>Turns the run key on or off (re-applying the movement when it changes).</summary>
+    // retail: CMotionInterp::set_hold_run (acclient.c:344491)
+    public void SetHoldRun(bool run, bool cancelMoveTo)
+    {
+        if (!run != (RawState.CurrentHoldKey != HoldKey.Run))
+        {
+            RawState.CurrentHoldKey = run ? HoldKey.Run : HoldKey.None;
+            ApplyCurrentMovement(cancelMoveTo, false);
+        }
+    }
+
+    /// <summary>Sets the current hold key to None or Run (re-applying the movement when it changes; Invalid is ignored).</summary>
+    // retail: CMotionInterp::SetHoldKey (acclient.c:344501)
+    public void SetHoldKey(HoldKey key, bool cancelMoveTo)
+    {
+        HoldKey current = RawState.CurrentHoldKey;
+        if (key == current)
+        {
+            return;
+        }
+
+        if (key == HoldKey.None)
+        {
+            if (current == HoldKey.Run)
+            {
+                RawState.CurrentHoldKey = HoldKey.None;
+                ApplyCurrentMovement(cancelMoveTo, false);
+            }
+        }
+        else if (key == HoldKey.Run && current != HoldKey.Run)
+        {
+            RawState.CurrentHoldKey = HoldKey.Run;
+            ApplyCurrentMovement(cancelMoveTo, false);
+        }
+    }
+}

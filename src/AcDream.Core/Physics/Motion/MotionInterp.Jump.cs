@@ -1,0 +1,256 @@
+using System.Numerics;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+
+namespace AcDream.Core.Physics.Motion;
+
+public sealed partial class MotionInterp
+{
+    /// <summary>The launch speed of the charged jump, m/s upwards: 0 below a charge of EPSILON, else the weenie's
+    /// <see cref="IMotionWeenie.InqJumpVelocity"/> of the charge clamped to 1 (0 when it refuses; 10 with no weenie).</summary>
+    // retail: CMotionInterp::get_jump_v_z (acclient.c:343342)
+    public double GetJumpVZ()
+    {
+        float extent = JumpExtent;
+        if (extent < (double)PhysicsGlobals.Epsilon)
+        {
+            return 0.0;
+        }
+
+        if (extent > 1.0)
+        {
+            extent = 1.0f;
+        }
+
+        if (_weenieObj is null)
+        {
+            return NoWeenieJumpVelocity;
+        }
+
+        return _weenieObj.InqJumpVelocity(extent, out float vz) ? vz : 0.0;
+    }
+
+    /// <summary>Whether a jump may be charged: 0x49 when the weenie refuses the charge, 0x48 while fallen, crouching,
+    /// sitting or sleeping, else 0.</summary>
+    // retail: CMotionInterp::jump_charge_is_allowed (acclient.c:343317)
+    public int JumpChargeIsAllowed()
+    {
+        if (_weenieObj is not null && !_weenieObj.CanJump(JumpExtent))
+        {
+            return MotionError.CantJumpLoadedDown;
+        }
+
+        uint f = InterpretedState.ForwardCommand;
+        return f == MotionCommand.Fallen || (f > 0x41000011u && f <= MotionCommand.Sleeping)
+            ? MotionError.YouCantJumpFromThisPosition
+            : MotionError.None;
+    }
+
+    /// <summary>
+    /// Starts charging a jump (<see cref="JumpChargeIsAllowed"/>); charging while standing still on the ground starts a
+    /// standing long jump.
+    /// </summary>
+    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    // retail: CMotionInterp::charge_jump (acclient.c:343844)
+    public int ChargeJump()
+    {
+        if (_weenieObj is not null && !_weenieObj.CanJump(JumpExtent))
+        {
+            return MotionError.CantJumpLoadedDown;
+        }
+
+        InterpretedMotionState s = InterpretedState;
+        uint f = s.ForwardCommand;
+        if (f == MotionCommand.Fallen || (f > 0x41000011u && f <= MotionCommand.Sleeping))
+        {
+            return MotionError.YouCantJumpFromThisPosition;
+        }
+
+        if (_physicsObj is not null && OnGround(_physicsObj) && f == MotionCommand.Ready && s.SidestepCommand == 0
+            && s.TurnCommand == 0)
+        {
+            _physicsObj.Touch();
+            StandingLongJump = true;
+        }
+
+        return MotionError.None;
+    }
+
+    /// <summary>True when the object may start <paramref name="motion"/> now: turns, Falling and Dead always; any motion
+    /// for a non-creature or an object without gravity, or on the ground.</summary>
+    // retail: CMotionInterp::contact_allows_move (acclient.c:343881)
+    public bool ContactAllowsMove(uint motion)
+    {
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null)
+        {
+            return false;
+        }
+
+        if (motion > MotionCommand.Falling)
+        {
+            if (motion >= MotionCommand.TurnRight && motion <= MotionCommand.TurnLeft)
+            {
+                return true;
+            }
+        }
+        else if (motion == MotionCommand.Falling || motion == MotionCommand.Dead)
+        {
+            return true;
+        }
+
+        if (_weenieObj is not null && !_weenieObj.IsCreature)
+        {
+            return true;
+        }
+
+        return !HasGravity(obj) || OnGround(obj);
+    }
+
+    /// <summary>
+    /// Whether a jump of charge <paramref name="extent"/> may start: 0x24 in the air, 0x47 fully constrained, the jump
+    /// error of the oldest unfinished motion, <see cref="JumpChargeIsAllowed"/>, <see cref="MotionAllowsJump"/> of the
+    /// forward motion, 0x47 when the weenie refuses the stamina cost; else 0 with the cost in
+    /// <paramref name="staminaCost"/> (0 with no weenie).
+    /// </summary>
+    // retail: CMotionInterp::jump_is_allowed (acclient.c:343921)
+    public int JumpIsAllowed(float extent, out int staminaCost)
+    {
+        staminaCost = 0;
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null
+            || !((_weenieObj is not null && !_weenieObj.IsCreature) || !HasGravity(obj) || OnGround(obj)))
+        {
+            return MotionError.YouCantJumpWhileInTheAir;
+        }
+
+        if (obj.IsFullyConstrained())
+        {
+            return MotionError.GeneralMovementFailure;
+        }
+
+        if (PendingMotions.Count != 0 && PendingMotions.Head.JumpErrorCode != 0)
+        {
+            return PendingMotions.Head.JumpErrorCode;
+        }
+
+        int result = JumpChargeIsAllowed();
+        if (result != MotionError.None)
+        {
+            return result;
+        }
+
+        int motionError = MotionAllowsJump(InterpretedState.ForwardCommand);
+        if (motionError != MotionError.None || _weenieObj is null)
+        {
+            return motionError;
+        }
+
+        return _weenieObj.JumpStaminaCost(extent, out staminaCost) ? motionError : MotionError.GeneralMovementFailure;
+    }
+
+    /// <summary>
+    /// Jumps with charge <paramref name="extent"/> (0..1): when <see cref="JumpIsAllowed"/>, records the charge and takes
+    /// the object off the ground (ON_WALKABLE cleared, so <see cref="LeaveGround"/> gives it the launch velocity);
+    /// otherwise ends a standing long jump.
+    /// </summary>
+    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <exception cref="System.ArgumentException"><paramref name="extent"/> is NaN or infinite (nothing changes).</exception>
+    // retail: CMotionInterp::jump (acclient.c:344223)
+    public int Jump(float extent, out int staminaCost)
+    {
+        if (!float.IsFinite(extent))
+        {
+            throw new System.ArgumentException("The jump extent must be finite.", nameof(extent));
+        }
+
+        staminaCost = 0;
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null)
+        {
+            return MotionError.NoPhysicsObject;
+        }
+
+        obj.Touch();
+        obj.CancelMoveTo();
+        int result = JumpIsAllowed(extent, out staminaCost);
+        if (result != MotionError.None)
+        {
+            StandingLongJump = false;
+            return result;
+        }
+
+        JumpExtent = extent;
+        obj.SetOnWalkable(false);
+        return result;
+    }
+
+    /// <summary>
+    /// The velocity the object leaves the ground with, local axes: <see cref="GetStateVelocity"/> with z the jump's
+    /// <see cref="GetJumpVZ"/>; when all three are below EPSILON, the object's current velocity in local axes.
+    /// </summary>
+    // retail: CMotionInterp::get_leave_ground_velocity (acclient.c:343805)
+    public Vector3 GetLeaveGroundVelocity()
+    {
+        Vector3 v = GetStateVelocity();
+        float vz = (float)GetJumpVZ();
+        v.Z = vz;
+        if (System.Math.Abs(v.X) < (double)PhysicsGlobals.Epsilon && System.Math.Abs(v.Y) < (double)PhysicsGlobals.Epsilon
+            && System.Math.Abs(vz) < (double)PhysicsGlobals.Epsilon && _physicsObj is not null)
+        {
+            v = GlobalVelocityToLocal(_physicsObj);
+        }
+
+        return v;
+    }
+
+    /// <summary>The object landed: a creature with gravity drops its link animations and re-applies its movement (so a
+    /// run that was recorded in the air starts now).</summary>
+    // retail: CMotionInterp::HitGround (acclient.c:344428)
+    public void HitGround()
+    {
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null || (_weenieObj is not null && !_weenieObj.IsCreature) || !HasGravity(obj))
+        {
+            return;
+        }
+
+        obj.RemoveLinkAnimations();
+        ApplyCurrentMovement(false, false);
+    }
+
+    /// <summary>The object left the ground: a creature with gravity takes its leave-ground velocity (the jump), the jump
+    /// charge and standing long jump end, and the movement is re-applied (Falling).</summary>
+    // retail: CMotionInterp::LeaveGround (acclient.c:344456)
+    public void LeaveGround()
+    {
+        PhysicsObj? obj = _physicsObj;
+        if (obj is null || (_weenieObj is not null && !_weenieObj.IsCreature) || !HasGravity(obj))
+        {
+            return;
+        }
+
+        Vector3 v = GetLeaveGroundVelocity();
+        obj.SetLocalVelocity(v);
+        StandingLongJump = false;
+        JumpExtent = 0f;
+        obj.RemoveLinkAnimations();
+        ApplyCurrentMovement(false, false);
+    }
+
+    /// <summary>Both states back to their defaults, the motion table initialised, a Ready queued, then
+    /// <see cref="LeaveGround"/> (an object is created in the air until it lands).</summary>
+    /// <exception cref="System.InvalidOperationException">The interpreter has no physics object.</exception>
+    // retail: CMotionInterp::enter_default_state (acclient.c:344559)
+    public void EnterDefaultState()
+    {
+        PhysicsObj obj = _physicsObj ?? throw new System.InvalidOperationException("The interpreter has no physics object.");
+        obj.Touch();
+        RawState.Reset();
+        InterpretedState.Reset();
+        obj.InitializeMotionTables();
+        AddToQueue(0, MotionCommand.Ready, MotionError.None);
+        Initted = true;
+        LeaveGround();
+    }
+}

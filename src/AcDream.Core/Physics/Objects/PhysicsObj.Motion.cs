@@ -1,0 +1,92 @@
+using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Objects.Seams;
+
+namespace AcDream.Core.Physics.Objects;
+
+// The object's side of the motion interpreter: the calls CMotionInterp makes on its physics object, forwarded to the part
+// array's motion table, and the movement manager's creation.
+public sealed partial class PhysicsObj
+{
+    /// <summary>
+    /// Creates the movement manager if absent (the world's <see cref="World.PhysicsWorld.MovementManagerFactory"/>, else
+    /// the retail <see cref="Motion.MovementManager"/>), entering its default state when <paramref name="initMotion"/>, and
+    /// activates a non-static object.
+    /// </summary>
+    /// <returns>The movement manager.</returns>
+    // retail: CPhysicsObj::MakeMovementManager (acclient.c:317453)
+    public IMovementManager MakeMovementManager(bool initMotion)
+    {
+        Touch();
+        if (MovementManager is null)
+        {
+            IMovementManager? custom = World.MovementManagerFactory?.Create(this);
+            if (custom is not null)
+            {
+                MovementManager = custom;
+            }
+            else
+            {
+                var mm = Motion.MovementManager.Create(this, Weenie as IMotionWeenie);
+                MovementManager = mm;
+                if (initMotion)
+                {
+                    mm.EnterDefaultState();
+                }
+            }
+
+            ActivateIfNotStatic();
+        }
+
+        return MovementManager;
+    }
+
+    // retail: CPhysicsObj::DoInterpretedMotion (acclient.c:315752)
+    internal int DoInterpretedMotion(uint motion, in MovementParameters p)
+    {
+        if (PartArray is null)
+        {
+            return MotionError.GeneralMovementFailure;
+        }
+
+        // retail: CPartArray::DoInterpretedMotion (acclient.c:326017): 7 without a motion-table manager
+        IMotionTable? table = PartArray.MotionTable;
+        return table is null ? MotionError.NoMotionTable : table.DoInterpretedMotion(motion, p);
+    }
+
+    // retail: CPhysicsObj::StopInterpretedMotion (acclient.c:315765)
+    internal int StopInterpretedMotion(uint motion, in MovementParameters p)
+    {
+        if (PartArray is null)
+        {
+            return MotionError.GeneralMovementFailure;
+        }
+
+        IMotionTable? table = PartArray.MotionTable;
+        return table is null ? MotionError.NoMotionTable : table.StopInterpretedMotion(motion, p);
+    }
+
+    // retail: CPhysicsObj::StopCompletely_Internal (acclient.c:315787)
+    internal void StopCompletelyInternal() => PartArray?.MotionTable?.StopCompletely();
+
+    // retail: CPhysicsObj::InitializeMotionTables (acclient.c:315742)
+    internal void InitializeMotionTables() => PartArray?.MotionTable?.InitializeMotionTables();
+
+    // retail: CPhysicsObj::RemoveLinkAnimations (acclient.c:317144)
+    internal void RemoveLinkAnimations() => PartArray?.HandleEnterWorld();
+
+    /// <summary>Reports every motion the part array's motion table has finished to the movement manager.</summary>
+    // retail: CPhysicsObj::CheckForCompletedMotions (acclient.c:317154) -> MotionTableManager::CheckForCompletedMotions
+    internal void CheckForCompletedMotions()
+    {
+        IMotionTable? table = PartArray?.MotionTable;
+        if (table is null)
+        {
+            return;
+        }
+
+        while (table.TryTakeCompletedMotion(out uint motion, out bool success))
+        {
+            MovementManager?.MotionDone(motion, success);
+        }
+    }
+}

@@ -1,0 +1,131 @@
+using System;
+using System.Globalization;
+using System.IO;
+using AcDream.Core.Physics.Motion;
+using AcDream.Core.Tests.Replay.Harness;
+using AcDream.Core.Tests.Support;
+using Xunit;
+using Xunit.Abstractions;
+
+namespace AcDream.Core.Tests.Replay;
+
+/// <summary>A fact that needs the real replay recordings (../shared/data/replay, found beside ACDREAM_TERRAIN_DIR).</summary>
+public sealed class ReplayDataFactAttribute : FactAttribute
+{
+    /// <summary>Skips the test when the recordings are not available.</summary>
+    public ReplayDataFactAttribute()
+    {
+        if (RealMotionReplayTests.Dir is null)
+        {
+            Skip = $"Real replay data not available: set {TerrainTestData.Variable} to ../shared/data/ac-terrain (the replay folder beside it is used).";
+        }
+    }
+}
+
+// The real recordings (../shared/data/replay): every MovementEvent decoded from its bytes, and a remote player replayed at
+// 30 Hz with and without the motion interpreter, compared with the poses its own client sent.
+public class RealMotionReplayTests(ITestOutputHelper output)
+{
+    /// <summary>The replay folder, or null.</summary>
+    public static string? Dir
+    {
+        get
+        {
+            string? terrain = Environment.GetEnvironmentVariable(TerrainTestData.Variable);
+            if (string.IsNullOrEmpty(terrain))
+            {
+                return null;
+            }
+
+            string dir = Path.GetFullPath(Path.Combine(terrain, "..", "replay"));
+            return File.Exists(Path.Combine(dir, "long-movement-run_s2c_movementevent.csv")) ? dir : null;
+        }
+    }
+
+    private const uint Brenwick = 0x5000001Du;
+
+    [ReplayDataFact]
+    public void EveryInterpretedMovementEvent_DecodesToExactlyItsLength()
+    {
+        var state = new InterpretedMotionState();
+        int total = 0, decoded = 0;
+        var otherTypes = new System.Collections.Generic.SortedDictionary<int, int>();
+        foreach (string slug in new[] { "long-movement-run", "fellowship-one-vassal", "fellowship-two-monarch", "fellowship-three-vassal" })
+        {
+            bool header = true;
+            foreach (string line in File.ReadLines(Path.Combine(Dir!, slug + "_s2c_movementevent.csv")))
+            {
+                if (header)
+                {
+                    header = false;
+                    continue;
+                }
+
+                byte[] data = Convert.FromHexString(line.Split(',')[6]);
+                total++;
+                if (MovementEventDecoder.TryDecode(data, state, out MovementEventHeader h))
+                {
+                    decoded++;
+                }
+                else
+                {
+                    // Only the move-to and turn-to types (6..9) are not decoded; a type-0 event must always decode.
+                    Assert.NotEqual(0, h.MovementType);
+                    otherTypes[h.MovementType] = (otherTypes.TryGetValue(h.MovementType, out int n) ? n : 0) + 1;
+                }
+            }
+        }
+
+        output.WriteLine($"{total} MovementEvents, {decoded} of type 0 decoded exactly; other types: {string.Join(", ", otherTypes)}");
+        Assert.True(decoded > 600);
+        foreach (int t in otherTypes.Keys)
+        {
+            Assert.InRange(t, 6, 9);
+        }
+    }
+
+    [Fact]
+    public void Decode_KnownEvents()
+    {
+        var s = new InterpretedMotionState();
+        // 0000 (type 0, no flags) 3d00 (style index 0x3D) | 03000000 (style + forward) 3d00 0300: NonCombat, Ready; 12 bytes.
+        Assert.True(MovementEventDecoder.TryDecode(Convert.FromHexString("00003d00030000003d000300"), s, out MovementEventHeader h));
+        Assert.Equal(MotionCommand.NonCombat, h.Style);
+        Assert.Equal(MotionCommand.Ready, s.ForwardCommand);
+        // 0x66 = style? no: 0x02 forward, 0x04 forward speed, 0x20 turn, 0x40 turn speed: RunForward (7) at 2.8256...
+        // 0700 0d00 | 20d73440 (2.8256836) | 0000c0bf (-1.5): run turning left at the run key's 1.5.
+        Assert.True(MovementEventDecoder.TryDecode(Convert.FromHexString("000000006600000007000d0020d734400000c0bf"), s, out _));
+        Assert.Equal(MotionCommand.RunForward, s.ForwardCommand);
+        Assert.Equal(BitConverter.Int32BitsToSingle(0x4034D720), s.ForwardSpeed);
+        Assert.Equal(MotionCommand.TurnRight, s.TurnCommand);
+        Assert.Equal(-1.5f, s.TurnSpeed);
+        // One byte short, or one byte too many: not decoded.
+        Assert.False(MovementEventDecoder.TryDecode(Convert.FromHexString("000000006600000007000d0020d734400000c0"), s, out _));
+        Assert.False(MovementEventDecoder.TryDecode(Convert.FromHexString("000000006600000007000d0020d734400000c0bf00"), s, out _));
+    }
+
+    [ReplayDataFact]
+    public void RemotePlayer_Replayed_WithMotion_IsCloserWhileMoving_ThanInterpolationOnly()
+    {
+        RealRecording rec = RealRecording.Load(Dir!, "long-movement-run", Brenwick);
+        RealReplayResult motion = RealReplay.Run(rec, Brenwick, applyMotion: true);
+        RealReplayResult interp = RealReplay.Run(rec, Brenwick, applyMotion: false);
+        var mm = RealReplay.Stats(motion.Samples, true);
+        var im = RealReplay.Stats(interp.Samples, true);
+        var ma = RealReplay.Stats(motion.Samples, null);
+        var ia = RealReplay.Stats(interp.Samples, null);
+        output.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"decoded {motion.Decoded}, skipped {motion.Skipped}; moving n={mm.Count}: motion median {mm.Median:F3} max {mm.Max:F3}, interp median {im.Median:F3} max {im.Max:F3}; all n={ma.Count}: motion {ma.Median:F3}/{ma.Max:F3}, interp {ia.Median:F3}/{ia.Max:F3}"));
+        foreach (RealSample x in motion.Samples)
+        {
+            if (x.Error > 1.0)
+            {
+                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  motion error {x.Error:F2} m at t {x.T:F2} (moving {x.Moving})"));
+            }
+        }
+
+        Assert.True(motion.Decoded > 100);
+        Assert.True(mm.Count > 20);
+        Assert.True(mm.Median < im.Median);
+    }
+}
