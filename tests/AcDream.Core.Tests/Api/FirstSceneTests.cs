@@ -3,6 +3,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;
@@ -116,7 +117,7 @@ public sealed class FirstSceneTests
     [Fact]
     public void Player_WalkingThreeMetresPerSecond_MovesThreeMetresInOneSecond()
     {
-        // Setting the world's player gives it a movement manager. Without one it deactivates itself on every step that
+        // Setting the world's player gives it retail's movement manager. Without one it deactivates itself on every step that
         // starts at rest on walkable ground (the small-velocity stop in UpdatePhysicsInternal leaves it inactive), so only every
         // other 0.05 s step moves it: 1.5 m. With one, all 20 steps of 0.05 s move it 3 * 0.05 = 0.15 m: 3 m north.
         TerrainWorld terrain = Flat();
@@ -126,7 +127,7 @@ public sealed class FirstSceneTests
         player.PartArray = body;
         Assert.True(player.EnterWorld(Spawn(terrain)));
         world.Player = player;
-        Assert.IsType<BasicMovementManager>(player.MovementManager);
+        Assert.IsType<MovementManager>(player.MovementManager);   // the retail movement manager (Physics/Motion)
         body.SequenceVelocity = new Vector3(0f, 3f, 0f);
         for (int k = 1; k <= 20; k++)
         {

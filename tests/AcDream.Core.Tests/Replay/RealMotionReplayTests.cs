@@ -4,6 +4,7 @@ using System.IO;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Tests.Replay.Harness;
 using AcDream.Core.Tests.Support;
+using AcDream.Core.Tests.Support.Shared;
 using Xunit;
 using Xunit.Abstractions;
 
@@ -17,7 +18,7 @@ public sealed class ReplayDataFactAttribute : FactAttribute
     {
         if (RealMotionReplayTests.Dir is null)
         {
-            Skip = $"Real replay data not available: set {TerrainTestData.Variable} to ../shared/data/ac-terrain (the replay folder beside it is used).";
+            Skip = $"Real replay data not available: no replay folder beside the terrain data ({TerrainDataDir.Variable} or ../shared/data/ac-terrain), so ../shared/data/replay is absent.";
         }
     }
 }
@@ -31,8 +32,9 @@ public class RealMotionReplayTests(ITestOutputHelper output)
     {
         get
         {
-            string? terrain = Environment.GetEnvironmentVariable(TerrainTestData.Variable);
-            if (string.IsNullOrEmpty(terrain))
+            // The replay folder lies beside the terrain folder, found as every real-terrain test finds it.
+            string? terrain = TerrainDataDir.Find(out _);
+            if (terrain is null)
             {
                 return null;
             }
