@@ -1,84 +1,143 @@
 using System;
-using System.Numerics;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 
 namespace AcDream.Samples.FirstScene;
 
 /// <summary>
-/// The player's controls, all in one place: what a client's input and motion code does each frame. Walking, running and
-/// turning are root motion (the part array's sequence velocity and omega, in the player's local axes: +Y forward, +Z up;
-/// the physics applies them only while the player stands on walkable ground); a jump is a velocity with an upward component
-/// (<see cref="PhysicsObj.SetLocalVelocity"/>), after which gravity takes over until the player lands.
+/// The player's controls, all in one place: what a client's input code does when keys go down and up. Keys become motion
+/// commands for retail's motion interpreter (<see cref="MovementManager.DoMotion"/> / <see cref="MovementManager.StopMotion"/>,
+/// the run key through <see cref="MotionInterp.SetHoldRun"/>, the jump key through <see cref="MotionInterp.ChargeJump"/> and
+/// <see cref="MotionInterp.Jump"/>); the interpreter plays them on the part array's motion table, whose velocity and omega move
+/// the body each tick (root motion, only on walkable ground), and launches the jump when the player leaves the ground.
 /// </summary>
-/// <remarks>When the port of retail's motion interpreter (CMotionInterp) and movement manager lands, this class is the one to
-/// replace: the commands below become motion-interpreter calls, which set the same sequence velocity and jump velocity.</remarks>
-internal static class PlayerControl
+internal sealed class PlayerControl
 {
-    /// <summary>Retail's walk speed, m/s (the human walk-forward animation's velocity).</summary>
-    public const float WalkSpeed = 3.12f;
+    /// <summary>The character: run skill 45 gives a run rate of (45 / 245 × 11 + 4) / 4 = 1.505 (running 6.02 m/s), jump skill
+    /// 100 at extent 0.5 a jump of (100 / 1400 × 22.2 + 0.05) × 0.5 = 0.818 m (v_z = √(19.6 × 0.818) = 4.00 m/s).</summary>
+    public static PlayerWeenie Character() => new() { RunSkill = 45, JumpSkill = 100, Strength = 100, Burden = 0 };
 
-    /// <summary>Run speed, m/s: retail's run-forward velocity 4 m/s times a run rate (from the run skill; 1.5 here).</summary>
-    public const float RunSpeed = 4.0f * 1.5f;
+    /// <summary>Jump charge released at the jump: half of a full charge.</summary>
+    public const float JumpExtent = 0.5f;
 
-    /// <summary>Turn rate, rad/s (positive turns left, counter-clockwise seen from above).</summary>
-    public const float TurnRate = MathF.PI / 4f;
+    private readonly MovementManager _mm;
+    private readonly MotionInterp _mi;
+    private bool _forward;
+    private bool _turnRight;
+    private bool _turnLeft;
+    private bool _run;
+    private bool _charging;
+    private bool _jumped;
 
-    /// <summary>Upward speed of the jump, m/s: a hop of v² / 2g = 16 / 19.6 = 0.82 m of free flight (plus the first step,
-    /// taken while still on the ground, without gravity).</summary>
-    public const float JumpSpeed = 4.0f;
-
-    /// <summary>Sets this frame's commands of the scripted walk at script time <paramref name="t"/> seconds.</summary>
-    /// <returns>The name of the current command, for the console.</returns>
-    public static string Drive(PhysicsObj player, SimplePartArray body, double t, ref bool jumped)
+    /// <summary>Prepares <paramref name="player"/> (already the world's player, its weenie set): the retail motion table speeds
+    /// on its part array, and its movement manager.</summary>
+    public PlayerControl(PhysicsObj player, SimplePartArray body)
     {
         ArgumentNullException.ThrowIfNull(player);
         ArgumentNullException.ThrowIfNull(body);
+        body.MotionTable = new RetailSpeedMotionTable();   // a client with real motion tables plugs its own in here
+        _mm = MovementManager.Of(player);
+        _mi = _mm.GetMinterp();
+    }
+
+    /// <summary>The commanded velocity in the player's local axes (+Y forward), m/s.</summary>
+    public System.Numerics.Vector3 CommandedVelocity => _mi.GetStateVelocity();
+
+    /// <summary>Sets the keys of the scripted walk at script time <paramref name="t"/> seconds (a real client does this from its
+    /// input events).</summary>
+    /// <returns>The name of the current command, for the console.</returns>
+    public string Drive(double t)
+    {
         if (t < 4.0)
         {
-            return Move(body, WalkSpeed, 0f, "walk north");
+            Keys(forward: true, run: false, turnRight: false, turnLeft: false);
+            return "walk north";
+        }
+
+        if (t < 5.0)
+        {
+            Keys(forward: true, run: false, turnRight: true, turnLeft: false);   // 1 s at pi/2 rad/s: a quarter turn, now east
+            return "walk, turning right";
         }
 
         if (t < 6.0)
         {
-            return Move(body, WalkSpeed, -TurnRate, "walk, turning right");   // 2 s at pi/4 rad/s: a quarter turn, now east
+            Keys(forward: true, run: false, turnRight: false, turnLeft: false);
+            return "walk east";
         }
 
         if (t < 10.0)
         {
-            return Move(body, RunSpeed, 0f, "run east");
+            Keys(forward: true, run: true, turnRight: false, turnLeft: false);
+            if (t >= 9.5 && !_charging && !_jumped)
+            {
+                _charging = true;
+                _mi.ChargeJump();                                 // jump key down: the charge builds
+            }
+
+            return _charging ? "run east, charging a jump" : "run east";
         }
 
-        if (!jumped)
+        if (!_jumped)
         {
-            // The jump keeps the run's forward speed: root motion stops while airborne, the velocity carries the player.
-            jumped = true;
-            player.SetLocalVelocity(new Vector3(0f, RunSpeed, JumpSpeed));
-            return Move(body, RunSpeed, 0f, "jump");
+            _jumped = true;
+            int err = _mi.Jump(JumpExtent, out _);                // jump key up: 0 = jumped, the launch comes at LeaveGround
+            return err == 0 ? "jump" : $"jump refused ({err})";
         }
 
-        if (t < 11.5)
+        if (t < 12.5)
         {
-            return Move(body, RunSpeed, 0f, "jump");
+            Keys(forward: true, run: true, turnRight: false, turnLeft: false);
+            return "run east (jump)";
         }
 
-        if (t < 13.5)
+        if (t < 13.25)
         {
-            return Move(body, WalkSpeed, TurnRate / 2f, "walk, turning left");  // 2 s at pi/8: 45 degrees, now north-east
+            Keys(forward: true, run: false, turnRight: false, turnLeft: true);   // 0.75 s at pi/2 rad/s: 67.5 degrees, now NNE
+            return "walk, turning left";
         }
 
         if (t < 20.0)
         {
-            return Move(body, WalkSpeed, 0f, "walk north-east (into the hut)");
+            Keys(forward: true, run: false, turnRight: false, turnLeft: false);
+            return "walk NNE (into the hut)";
         }
 
-        return Move(body, 0f, 0f, "stand");
+        Keys(forward: false, run: false, turnRight: false, turnLeft: false);
+        return "stand";
     }
 
-    private static string Move(SimplePartArray body, float forward, float turn, string name)
+    // Key transitions become motion commands; a held key is not re-sent (retail's input layer sends changes only).
+    private void Keys(bool forward, bool run, bool turnRight, bool turnLeft)
     {
-        body.SequenceVelocity = new Vector3(0f, forward, 0f);
-        body.SequenceOmega = new Vector3(0f, 0f, turn);
-        return name;
+        if (run != _run)
+        {
+            _run = run;
+            _mi.SetHoldRun(run, false);
+        }
+
+        Key(ref _forward, forward, MotionCommand.WalkForward);
+        Key(ref _turnRight, turnRight, MotionCommand.TurnRight);
+        Key(ref _turnLeft, turnLeft, MotionCommand.TurnLeft);
+    }
+
+    private void Key(ref bool down, bool wanted, uint command)
+    {
+        if (down == wanted)
+        {
+            return;
+        }
+
+        down = wanted;
+        var p = new MovementParameters { HoldKeyToApply = _run ? HoldKey.Run : HoldKey.None };
+        if (wanted)
+        {
+            _mm.DoMotion(command, p);
+        }
+        else
+        {
+            _mm.StopMotion(command, p);
+        }
     }
 }

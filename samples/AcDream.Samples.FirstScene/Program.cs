@@ -60,11 +60,13 @@ public static class Program
         // 2. The world over that terrain: the retail collision sweep.
         var world = new PhysicsWorld(terrain);
 
-        // 3. The player: a part array from the human Setup, placed on the ground, made the world's player (which gives it its
-        //    movement manager). SetupIssues names anything that would keep it from walking.
+        // 3. The player: a part array from the human Setup and the character's skills (its weenie), placed on the ground,
+        //    made the world's player (which gives it retail's movement manager and motion interpreter). SetupIssues names
+        //    anything that would keep it from walking.
         PhysicsObj player = world.CreateObject(0x50000001);
         var body = new SimplePartArray(SetupPhysics.Human);
         player.PartArray = body;
+        player.Weenie = PlayerControl.Character();
         if (!player.EnterWorld(Scene.OnGround(terrain, 60f, 40f, heading: 0f)))
         {
             Console.Error.WriteLine("the player could not enter the world");
@@ -78,9 +80,10 @@ public static class Program
             return 1;
         }
 
+        var controls = new PlayerControl(player, body);
         var remote = new RemoteCreature(world, terrain);
         var check = new SceneCheck();
-        bool jumped = false, faded = false;
+        bool faded = false;
         Console.WriteLine("   t  player cell     x       y       z     contact  speed  heading  command                         | creature  error  transl.");
         int frames = (int)Math.Round(seconds * fps);
         string command = "";
@@ -90,7 +93,7 @@ public static class Program
 
             // 4. Each frame: network input first (remote objects), then the player's controls, then the world tick.
             remote.Deliver(now);
-            command = PlayerControl.Drive(player, body, now, ref jumped);
+            command = controls.Drive(now);
             if (!faded && now >= 20.0 && remote.Obj is not null)
             {
                 faded = true;

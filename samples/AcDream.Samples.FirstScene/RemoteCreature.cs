@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
@@ -10,18 +11,19 @@ namespace AcDream.Samples.FirstScene;
 
 /// <summary>
 /// A creature the client does not control: a stand-in server walks it around a circle and sends its position every 0.2 s,
-/// each arriving 0.1 s late; the client applies each report with <see cref="PhysicsObj.HandleReceivedPosition"/> and keeps
-/// the creature's root motion at the motion the server says it has (walking), so that it moves smoothly between reports.
+/// each arriving 0.1 s late. The client applies the server's MovementEvent (walk forward, turning left) once, when the
+/// creature appears, with <see cref="MovementEvent.ApplyInterpretedMotion"/> — the motion interpreter then walks it between
+/// reports — and each report with <see cref="PhysicsObj.HandleReceivedPosition"/>, whose interpolation corrects the drift.
 /// </summary>
 internal sealed class RemoteCreature
 {
     private const double Period = 0.2;
     private const double Latency = 0.1;
     private const float Radius = 8f;
+    private const float WalkSpeed = 3.12f;   // retail's walk speed at forward speed 1 (get_state_velocity)
     private static readonly Vector2 Centre = new(40f, 90f);
     private readonly PhysicsWorld _world;
     private readonly TerrainWorld _terrain;
-    private SimplePartArray? _body;
     private double _nextSend;
     private ushort _positionStamp;
 
@@ -46,26 +48,38 @@ internal sealed class RemoteCreature
             _world.SetCurrentTime(_nextSend + Latency);
             if (Obj is null)
             {
-                // What a network layer sets on a new remote object before its first update: a part array from its Setup, a
-                // movement manager (GetMinterp creates it), then the first position through EnterWorld.
+                // What a network layer sets on a new remote object before its first update: a part array from its Setup with a
+                // motion table, its weenie (a creature: its motion arrives interpreted), then the first position through
+                // EnterWorld, then the MovementEvent the server sends with it.
                 Obj = _world.CreateObject(0x80000010);
-                _body = new SimplePartArray(SetupPhysics.Human);
-                Obj.PartArray = _body;
-                Obj.GetMinterp();
+                var body = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
+                Obj.PartArray = body;
+                Obj.Weenie = RemoteCreatureWeenie.Creature;
                 if (!Obj.EnterWorld(report))
                 {
                     throw new InvalidOperationException("The remote creature could not enter the world.");
                 }
+
+                MovementEvent.ApplyInterpretedMotion(Obj, WalkingTheCircle());
             }
 
-            // The motion the server reports (walk forward, turning left around the circle), then the position.
-            _body!.SequenceVelocity = new Vector3(0f, PlayerControl.WalkSpeed, 0f);
-            _body.SequenceOmega = new Vector3(0f, 0f, PlayerControl.WalkSpeed / Radius);
             Obj.HandleReceivedPosition(report, ++_positionStamp, teleportTimestamp: 0, hasContact: true);
             Reports++;
             _nextSend += Period;
         }
     }
+
+    /// <summary>The interpreted motion state the server sends for the walk around the circle (what a client decodes from the
+    /// MovementEvent, <see cref="MovementEventDecoder"/>): walk forward at speed 1 (3.12 m/s) and turn left at the speed that
+    /// closes the circle, ω = 3.12 / 8 rad/s over retail's π/2 rad/s at speed 1 (an interpreted left turn is TurnRight at a
+    /// negative speed).</summary>
+    private static InterpretedMotionState WalkingTheCircle() => new()
+    {
+        ForwardCommand = MotionCommand.WalkForward,
+        ForwardSpeed = 1f,
+        TurnCommand = MotionCommand.TurnRight,
+        TurnSpeed = -(float)(WalkSpeed / Radius / (Math.PI / 2.0)),
+    };
 
     /// <summary>Distance, metres, from the creature to where the server has it at <paramref name="now"/>.</summary>
     public float ErrorAt(double now)
@@ -83,7 +97,7 @@ internal sealed class RemoteCreature
     /// walking speed, on the ground, facing along its path.</summary>
     public Position Truth(double t)
     {
-        double a = t * PlayerControl.WalkSpeed / Radius;
+        double a = t * WalkSpeed / Radius;
         float x = Centre.X + Radius * (float)Math.Cos(a);
         float y = Centre.Y + Radius * (float)Math.Sin(a);
         // Moving counter-clockwise, the path's direction is (-sin a, cos a): heading = atan2(dx, dy) clockwise from north.

@@ -2,6 +2,7 @@ using System;
 using System.IO;
 using System.Numerics;
 using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
@@ -22,15 +23,17 @@ public sealed class QuickstartTests
     {
         var (player, top) = Quickstart();
 
-        // Walk: 3 m/s for the simulated time of the first 60 frames. The world steps its objects when at least 1/30 s has
-        // passed since its last step (CPhysics::UseTime), so the last step before t = 1 s lies within 1/30 s of it (a summed
-        // frame time can fall an ulp short of the gate): 2.9 to 3.0 m, y in 100 + [2.9, 3.0].
-        // Jump: the first step after SetLocalVelocity still starts on walkable ground (no gravity): 4 * 1/30 = 0.133 m (0.2 m
-        // for a 1/20 s step); then free flight to 4^2 / (2 * 9.8) = 0.816 m above that, sampled at step times (<= 0.003 m
-        // short): top in [0.93, 1.02]. It jumps standing (root motion stopped), so y stays; 1 s after the jump (flight 0.82 s)
-        // it stands on the ground again.
-        Assert.InRange(player.Position.Frame.Origin.Y, 102.899f, 103.001f);
-        Assert.InRange(top, 0.93f, 1.02f);
+        // Walk: WalkForward plays at retail's 3.12 m/s (RetailSpeedMotionTable; get_state_velocity's walk speed) for the
+        // simulated time of the first 60 frames. The world steps its objects when at least 1/30 s has passed since its last
+        // step (CPhysics::UseTime), so the last step before t = 1 s lies within 1/30 s of it (a summed frame time can fall an
+        // ulp short of the gate): 29/30 to 1 s of walking, y in 100 + 3.12 * [0.9667, 1] = [103.016, 103.12].
+        // Jump: jump skill 100 at extent 0.5 gives h = (100 / 1400 * 22.2 + 0.05) * 0.5 = 0.8179 m (GetJumpHeight) and
+        // v_z = sqrt(19.6 h) = 4.0037 m/s (InqJumpVelocity). Jump clears ON_WALKABLE at once (CMotionInterp::jump), so the
+        // next step already flies from z = 0 with that launch speed: the apex is v_z^2 / (2 * 9.8) = 0.8179 m, sampled at
+        // 1/30 s step times, so at most 9.8 * (1/60)^2 / 2 = 0.0014 m short: top in [0.8165, 0.8180]. It jumps standing
+        // (the walk stopped), so y stays; 1 s after the jump (flight 0.82 s) it stands on the ground again.
+        Assert.InRange(player.Position.Frame.Origin.Y, 103.015f, 103.121f);
+        Assert.InRange(top, 0.8165f, 0.8180f);
         Assert.Equal(0f, player.Position.Frame.Origin.Z, 5);   // the landing's contact-plane placement leaves float rounding
         Assert.Equal(ObjectSetupIssues.None, player.SetupIssues);
     }
@@ -55,20 +58,22 @@ public sealed class QuickstartTests
 
         var world = new PhysicsWorld(terrain);                  // over terrain: the retail collision sweep
         PhysicsObj player = world.CreateObject(0x50000001);
-        var body = new SimplePartArray(SetupPhysics.Human);     // spheres, sizes and step heights of the human Setup
-        player.PartArray = body;
+        var body = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
+        player.PartArray = body;                                // the human Setup's shape; retail's walk/run/turn speeds
+        player.Weenie = new PlayerWeenie { RunSkill = 200, JumpSkill = 100, Strength = 100 };
         player.EnterWorld(new Position(0xA9B40025, new Vector3(100f, 100f, 0f)));
-        world.Player = player;                                  // the player gets its movement manager
+        world.Player = player;                                  // the player gets retail's movement manager
         System.Diagnostics.Debug.Assert(player.SetupIssues == ObjectSetupIssues.None);
+        MovementManager mm = MovementManager.Of(player);
 
         double now = 0;
-        body.SequenceVelocity = new Vector3(0f, 3f, 0f);        // walk: root motion, 3 m/s forward (+Y local)
-        for (int f = 0; f < 60; f++) world.Tick(now += 1.0 / 60);                 // 1 s at 60 fps: about 3 m north
-        body.SequenceVelocity = Vector3.Zero;                   // stop
-        player.SetLocalVelocity(new Vector3(0f, 0f, 4f));       // jump: 4 m/s up; gravity brings it back down
+        mm.DoMotion(MotionCommand.WalkForward, new MovementParameters());   // W down: walk, 3.12 m/s forward
+        for (int f = 0; f < 60; f++) world.Tick(now += 1.0 / 60);           // 1 s at 60 fps: about 3.1 m north
+        mm.StopMotion(MotionCommand.WalkForward, new MovementParameters()); // W up
+        mm.GetMinterp().ChargeJump();                                       // jump key down ...
+        mm.GetMinterp().Jump(0.5f, out _);                                  // ... and up: a 0.82 m jump (4.0 m/s up)
         float top = 0f;
         for (int f = 0; f < 60; f++) { world.Tick(now += 1.0 / 60); top = MathF.Max(top, player.Position.Frame.Origin.Z); }
-        // top ≈ 1 m: the first step (1/30 or 1/20 s; still on the ground, so no gravity) rises 0.13-0.2 m, then 4² / (2 · 9.8) = 0.82 m
         // quickstart-end
         return (player, top);
     }
