@@ -66,6 +66,24 @@ public class CellarWalkTests
     }
 
     [GeometryDataFact]
+    public void DoorSillEightyFiveCentimetresUp_IsRefused_ThoughWithinTheReach()
+    {
+        // The door of 0x014F in the shell's wall y = -8 (world 19.5) has its floor at z 0.85, 0.85 m above the terrain (94)
+        // in front of it; the steps up to it are not in the dumps. 0.85 is within the reach 1.5 × 0.6 = 0.9, but the step up
+        // needs the foot sphere to touch the tread: the tread is 0.85 - 0.48 = 0.37 above the centre, so it is touched
+        // within sqrt((0.48 - 0.0002)² - 0.37²) = 0.305 m of its edge, while at the riser hit the centre is at least
+        // 0.48 - 0.075 = 0.405 m away (1.5 m/s, 0.075 m per tick). Refused: the walker stays outdoors, in front of the wall
+        // (its centre within 0.48..0.555 m of it), on the terrain.
+        CellarScene s = Scene();
+        Vector3 start = CellarFrame(s).LocalToGlobal(new Vector3(-8.9f, -10f, 0f));
+        var visited = Walk(s, SyntheticTerrain.OnGround(s.Cells.Terrain, Holtburg.CentreCell(start.X, start.Y), start.X, start.Y, 180f),
+            [new(-8.9f, -7.7f), new(-8.9f, -5f)], 200, out PhysicsObj obj, _ => null, reachesTheEnd: false);
+        Assert.Equal(new[] { Outdoor }, visited.ToArray());
+        Assert.InRange(obj.Position.Frame.Origin.Y, 19.5f + HumanWalker.Radius, 19.5f + HumanWalker.Radius + 0.075f + 0.001f);
+        Assert.Equal(94f, obj.Position.Frame.Origin.Z, 2);
+    }
+
+    [GeometryDataFact]
     public void FloorHatchToTheCellar_IsAPrecipice_AndHoldsTheWalker()
     {
         // The hatch 0x0146 (x -11.6..-10) opens onto the cellar floor 3.05 m below; the dumps hold no stair object. With
