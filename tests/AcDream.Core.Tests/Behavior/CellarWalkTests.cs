@@ -115,14 +115,31 @@ public class CellarWalkTests
         Assert.Equal(94f - 3.05f, obj.Position.Frame.Origin.Z, 2);
     }
 
-    // Walks the human through cell-local waypoints (xy of the first cellar) at 1.5 m/s, 20 ticks a second, checking every
+    [GeometryDataFact]
+    public void SecondCellar_ThroughItsRooms_AndOutThroughTheFlapDoorway()
+    {
+        // The second cellar (cells 0x0170..0x0175, origin (161.929, 7.503, 94), turned 180°): its building shell is not in
+        // the dumps, so the walk starts inside, in the hall 0x0171 (floor z 0). Through the doorway 0x0173 into the room
+        // 0x0172 and back, then south through the flap doorway 0x0170 and its outdoor portal onto the terrain (z 94 there).
+        const uint hall = CellarScene.Block | 0x0171, door = CellarScene.Block | 0x0173, room = CellarScene.Block | 0x0172,
+            flap = CellarScene.Block | 0x0170;
+        CellarScene s = Scene();
+        Frame f = s.Env[hall].Cell.Pos.Frame;
+        var p = new Position(hall, Frame.FromHeading(f.LocalToGlobal(new Vector3(6.5f, -5f, 0f)), 90f));
+        var visited = Walk(s, p, [new(4.6f, -0.9f), new(1f, -0.9f), new(4.6f, -0.9f), new(6.5f, -5f), new(6.5f, -10f)], 400, out PhysicsObj obj,
+            cell => cell is hall or door or room or flap ? (94f, 94f) : null, frameOf: hall);
+        Assert.Equal(new[] { hall, door, room, door, hall, flap, Outdoor }, visited.ToArray());
+        Assert.Equal(94f, obj.Position.Frame.Origin.Z, 2);
+    }
+
+    // Walks the human through cell-local waypoints (xy in the frame of cell frameOf, by default the first cellar's) at 1.5 m/s, 20 ticks a second, checking every
     // tick; returns the sequence of cells it was in (outdoor cells as 0).
     private static List<uint> Walk(CellarScene s, in Position start, Vector2[] route, int maxTicks, out PhysicsObj obj,
-        Func<uint, (float Lo, float Hi)?> floorOf, bool reachesTheEnd = true)
+        Func<uint, (float Lo, float Hi)?> floorOf, bool reachesTheEnd = true, uint frameOf = Doorway)
     {
         var world = new PhysicsWorld(0.0) { Sweep = new RetailSweep(s.Cells) };
         obj = HumanWalker.Create(world, start);
-        Frame f = CellarFrame(s);
+        Frame f = s.Env[frameOf].Cell.Pos.Frame;
         var visited = new List<uint>();
         int w = 0;
         Vector3 prev = Feet(obj) + new Vector3(0f, 0f, HumanWalker.Radius);
