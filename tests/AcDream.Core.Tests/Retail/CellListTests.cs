@@ -149,3 +149,22 @@ public class CellListTests
         Assert.Null(current);
     }
 }
+
+public class CellListManySpheresTests
+{
+    [Fact]
+    public void MoreThanTwoSpheres_EveryCentreAddsItsCell()
+    {
+        // An object's cylinder spheres reach the outdoor cell search (CPhysicsObj::calc_cross_cells → find_cell_list →
+        // CLandCell::add_all_outside_cells, acclient.c:355345, which loops over every sphere). Three r 1 spheres in the
+        // middles of cells (1, 1), (2, 1), (3, 1) of 0xA9B4 (low words 1*8+1+1 = 0x0A, 0x12, 0x1A): all three are listed,
+        // in sphere order. (The port listed only the first two before.)
+        var cells = new WorldCells(new TerrainWorld(TerrainTestData.IdentityTable()));
+        var ca = new AcDream.Core.Physics.Collision.CellArray();
+        var p = new Position(0xA9B4000Au, new Vector3(36f, 36f, 0f));
+        CellList.AddAllOutsideCells(cells, p,
+            [new(new Vector3(36f, 36f, 0f), 1f), new(new Vector3(60f, 36f, 0f), 1f), new(new Vector3(84f, 36f, 0f), 1f)], ca);
+        Assert.Equal(3, ca.NumCells);
+        Assert.Equal(new[] { 0xA9B4000Au, 0xA9B40012u, 0xA9B4001Au }, new[] { ca.Cells[0].CellId, ca.Cells[1].CellId, ca.Cells[2].CellId });
+    }
+}

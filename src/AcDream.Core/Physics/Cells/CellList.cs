@@ -106,7 +106,30 @@ internal static class CellList
         }
 
         cellArray.AddedOutside = true;
-        int n = spheres.Length <= SpherePath.MaxSpheres ? spheres.Length : SpherePath.MaxSpheres;
+        if (spheres.Length > SpherePath.MaxSpheres)
+        {
+            // More spheres than a sweep carries (an object's cylinder spheres, up to 10): retail's loop runs over all of
+            // them, one sphere at a time, stopping at the first centre past the world edge. Same cells and order as the
+            // batch below (each sphere appends its cells; the array keeps the first of a duplicate).
+            Span<uint> one = stackalloc uint[LandCell.MaxCellsPerSphere];
+            for (int s = 0; s < spheres.Length; s++)
+            {
+                int k = 0;
+                if (!LandCell.AddOutsideCellsForSphere(p.ObjCellId, spheres[s].Center, spheres[s].Radius, one, ref k))
+                {
+                    return;
+                }
+
+                for (int i = 0; i < k; i++)
+                {
+                    cellArray.AddCell(one[i], cells.GetVisible(one[i]));
+                }
+            }
+
+            return;
+        }
+
+        int n = spheres.Length;
         Span<Vector3> centers = stackalloc Vector3[SpherePath.MaxSpheres];
         Span<float> radii = stackalloc float[SpherePath.MaxSpheres];
         for (int i = 0; i < n; i++)

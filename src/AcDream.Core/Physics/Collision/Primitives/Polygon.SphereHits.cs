@@ -290,7 +290,8 @@ public sealed partial class Polygon
         return new Vector3(x, y, z);
     }
 
-    // The edge walk shared by polygon_hits_sphere and check_small_walkable: a disc of squared radius radsq around a point in the
+    // The edge walk shared by polygon_hits_sphere, check_walkable and check_small_walkable (the three print the same loop,
+    // acclient.c:359915, 360226, 360311): a disc of squared radius radsq around a point in the
     // polygon's plane touches the polygon when it is inside every edge, or reaches an edge segment or a vertex; an edge it is
     // outside of by more than the radius ends the walk with a miss.
     private bool DiscTouches(Vector3 point, float radsq)
@@ -337,7 +338,7 @@ public sealed partial class Polygon
         float dz = (float)dzd;
         Vector3 n = Plane.N;
         double cross = dzd * ((double)ey * n.X - (double)ex * n.Y)
-                       + (double)dy * ((double)ex * n.Z - ezd * n.X)
+                       + (double)dy * ((double)ex * n.Z - (double)ez * n.X)
                        + (double)dx * (ezd * n.Y - (double)ey * n.Z);
         if (cross >= 0.0)
         {

@@ -9,11 +9,13 @@ public sealed partial class Polygon
 {
     /// <summary>
     /// True when <paramref name="sphere"/>, dropped along <paramref name="up"/> onto the polygon's plane, still stands on
-    /// the polygon: its projected centre is inside every edge or within the radius of a vertex.
+    /// the polygon: its projected centre is inside every edge, or within the radius of an edge segment or of a vertex.
     /// </summary>
-    /// <remarks>Retail ambiguity: after the inside-edge test fails, the decompiler shows a second flags-only test (C0|C2)
-    /// that we read as the same "outside this edge" compare, so an outside centre returns false at once (the edge
-    /// projection test after it is then unreachable, as the flags say). Pinned by a test; see docs/divergences.md.</remarks>
+    /// <remarks>Retail ambiguity BSP-B1 (docs/divergences.md): after "outside this edge" the decompiler shows a flags-only
+    /// compare whose operands were lost. It is read, here as in the BSP's polygon tests, as "outside this edge by more than
+    /// the radius" → not walkable; a centre outside an edge by less than the radius goes on to the edge-segment and vertex
+    /// tests (the code the decompiler prints after the compare). Same edge walk as <see cref="CheckSmallWalkable"/> with
+    /// the full radius.</remarks>
     // retail: CPolygon::check_walkable (acclient.c:360226)
     public bool CheckWalkable(in Sphere sphere, Vector3 up)
     {
@@ -22,37 +24,8 @@ public sealed partial class Polygon
             return false;
         }
 
-        Vector3 n = Plane.N;
-        float cx = dropped.X, cy = dropped.Y, cz = dropped.Z;
-        float inside = sphere.Radius * sphere.Radius;
-        ReadOnlySpan<Vector3> v = Vertices;
-        int last = v.Length - 1;
-        for (int i = 0; i < v.Length; i++)
-        {
-            Vector3 a = v[last];
-            Vector3 b = v[i];
-            last = i;
-            float ex = b.X - a.X;
-            float ey = b.Y - a.Y;
-            float ez = b.Z - a.Z;
-            float dx = cx - a.X;
-            float dy = cy - a.Y;
-            float dz = cz - a.Z;
-            double test = (double)dz * ((double)ey * n.X - (double)ex * n.Y)
-                          + (double)dy * ((double)ex * n.Z - (double)ez * n.X)
-                          + (double)dx * ((double)ez * n.Y - (double)ey * n.Z);
-            if (!(test >= 0.0))
-            {
-                return false;
-            }
-
-            if ((double)dz * dz + (double)dy * dy + (double)dx * dx <= inside)
-            {
-                return true;
-            }
-        }
-
-        return true;
+        float inside = (float)((double)sphere.Radius * sphere.Radius);
+        return DiscTouches(dropped, inside);
     }
 
     /// <summary>
