@@ -85,8 +85,9 @@ internal static class GeometryTestData
             string? dir = Environment.GetEnvironmentVariable(Variable);
             if (string.IsNullOrEmpty(dir))
             {
-                string? terrain = Environment.GetEnvironmentVariable(TerrainTestData.Variable);
-                dir = string.IsNullOrEmpty(terrain) ? null : Path.Combine(terrain, "..", "geometry");
+                // Beside the terrain folder, found as every real-terrain test finds it (TerrainDataDir).
+                string? terrain = TerrainTestData.FindDir(out _);
+                dir = terrain is null ? null : Path.Combine(terrain, "..", "geometry");
             }
 
             return dir is not null && Directory.Exists(dir) ? dir : null;
@@ -100,10 +101,10 @@ public sealed class GeometryDataFactAttribute : Xunit.FactAttribute
     /// <summary>Skips the test when the geometry or terrain folder is missing.</summary>
     public GeometryDataFactAttribute()
     {
-        if (GeometryTestData.Dir is null || string.IsNullOrEmpty(Environment.GetEnvironmentVariable(TerrainTestData.Variable)))
+        if (GeometryTestData.Dir is null || TerrainTestData.FindDir(out _) is null)
         {
-            Skip = $"Real cellar geometry not available: set {TerrainTestData.Variable} to ../shared/data/ac-terrain (the geometry "
-                + $"folder beside it is used) or {GeometryTestData.Variable} to ../shared/data/geometry.";
+            Skip = $"Real cellar geometry not available: neither {GeometryTestData.Variable} nor a geometry folder beside the terrain "
+                + $"data ({TerrainTestData.Variable} or ../shared/data/ac-terrain) was found.";
         }
     }
 }
