@@ -243,7 +243,8 @@ public sealed partial class PhysicsObj
         }
 
         World.Sweep.HandleAllCollisions(this, prevContact, prevOnWalkable);
-        if (CellId != 0)
+        // non-retail: a collision listener may have removed the object from its world: it casts no shadow any more
+        if (CellId != 0 && !RemovedFromWorld)
         {
             World.Sweep.UpdateCellShadows(this);
         }

@@ -35,6 +35,12 @@ public sealed partial class PhysicsObj
     internal void AddShadowsToCells(CellArray cellArray, ObjCell? ownCell)
     {
         ArgumentNullException.ThrowIfNull(cellArray);
+        // non-retail: an object removed from its world (or hanging from one) never lists itself in a cell again
+        if (RemovedFromWorld)
+        {
+            return;
+        }
+
         if ((_state & PhysicsState.ParticleEmitter) != 0)
         {
             AddParticleShadowToCell(ownCell);

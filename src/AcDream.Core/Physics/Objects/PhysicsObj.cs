@@ -82,6 +82,10 @@ public sealed partial class PhysicsObj
     /// <summary>Index in the world's object list; -1 once removed.</summary>
     internal int WorldIndex { get; set; }
 
+    /// <summary>True once <see cref="PhysicsWorld.RemoveObject"/> took the object out of its world (for good): a step in
+    /// progress stops, and the object never lists itself in a cell again.</summary>
+    internal bool RemovedFromWorld { get; set; }
+
     /// <summary>The object's id (retail <c>id</c>).</summary>
     public uint Id { get; }
 

@@ -20,6 +20,8 @@ public sealed partial class PhysicsWorld
     private int _count;
     private PhysicsObj? _player;
     private readonly System.Collections.Generic.Dictionary<uint, PhysicsObj> _byId = new();
+    private bool _inUseTime;
+    private int _visitCursor;
 
     /// <summary>Creates a world whose clocks start at <paramref name="startTime"/> seconds.</summary>
     /// <param name="startTime">Initial client time, seconds.</param>
@@ -173,6 +175,11 @@ public sealed partial class PhysicsWorld
         Array.Copy(_objects, at, _objects, at + 1, _count - at);
         _objects[at] = obj;
         _count++;
+        if (_inUseTime && at <= _visitCursor)
+        {
+            _visitCursor++; // created from a callback before the visit in progress: visited from the next tick on
+        }
+
         for (int k = at; k < _count; k++)
         {
             _objects[k].WorldIndex = k;
@@ -188,6 +195,11 @@ public sealed partial class PhysicsWorld
     }
 
     /// <summary>Removes <paramref name="obj"/> from the world (it is no longer ticked). Order of the others is kept.</summary>
+    /// <remarks>Safe from any callback inside a tick (hooks, the step observer, collision and player listeners), the removed
+    /// object's own included: its step ends at the callback, its shadows leave the cells and never return, its hooks are
+    /// dropped (pooled fades go back to the pool once), and every other object is still visited exactly once this tick. The
+    /// removed object keeps its last <see cref="PhysicsObj.Position"/> and <see cref="PhysicsObj.CellId"/> for the caller to
+    /// read; it cannot be added back.</remarks>
     /// <exception cref="ArgumentException">The object is not in this world.</exception>
     public void RemoveObject(PhysicsObj obj)
     {
@@ -206,6 +218,11 @@ public sealed partial class PhysicsWorld
         int i = obj.WorldIndex;
         Array.Copy(_objects, i + 1, _objects, i, _count - i - 1);
         _count--;
+        if (_inUseTime && i <= _visitCursor)
+        {
+            _visitCursor--; // the tick in progress goes on with the object that followed
+        }
+
         _objects[_count] = null!;
         for (int k = i; k < _count; k++)
         {
@@ -213,6 +230,7 @@ public sealed partial class PhysicsWorld
         }
 
         obj.WorldIndex = -1;
+        obj.RemovedFromWorld = true;
         if (obj.Id != 0 && _byId.TryGetValue(obj.Id, out PhysicsObj? found) && found == obj)
         {
             _byId.Remove(obj.Id);
@@ -228,8 +246,11 @@ public sealed partial class PhysicsWorld
 
     /// <summary>Sets the client clock without ticking (retail: the client loop advancing <c>Timer::cur_time</c>).</summary>
     /// <exception cref="ArgumentException"><paramref name="now"/> is NaN or infinite. The clock may go backwards (retail resyncs).</exception>
+    /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick (the clock the tick is
+    /// slicing would change under it); nothing changes.</exception>
     public void SetCurrentTime(double now)
     {
+        ThrowIfInTick();
         if (!double.IsFinite(now))
         {
             throw new ArgumentException("Time must be finite.", nameof(now));
@@ -241,6 +262,8 @@ public sealed partial class PhysicsWorld
     /// <summary>Sets the client clock to <paramref name="now"/> and runs <see cref="UseTime"/>.</summary>
     /// <returns>True when the objects were updated (at least MinQuantum had passed).</returns>
     /// <exception cref="ArgumentException"><paramref name="now"/> is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick (re-entrant tick); nothing
+    /// changes and the tick in progress goes on.</exception>
     public bool Tick(double now)
     {
         SetCurrentTime(now);
@@ -252,9 +275,11 @@ public sealed partial class PhysicsWorld
     /// last update, runs <see cref="PhysicsObj.UpdateObject"/> on every object in order and records the time.
     /// </summary>
     /// <returns>True when the objects were updated.</returns>
+    /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick; nothing changes.</exception>
     // retail: CPhysics::UseTime (acclient.c:311334)
     public bool UseTime()
     {
+        ThrowIfInTick();
         double quantum = CurrentTime - LastUpdate;
         if (quantum < 0.0)
         {
@@ -267,27 +292,48 @@ public sealed partial class PhysicsWorld
             return false;
         }
 
-        if (VisitEveryObject)
+        // non-retail: the re-entrancy guard (retail's tick is never called from inside itself)
+        _inUseTime = true;
+        try
         {
-            PhysicsObj? player = _player;
-            for (int i = 0; i < _count; i++)
+            if (VisitEveryObject)
             {
-                PhysicsObj obj = _objects[i];
-                obj.UpdateObject();
-                if (obj == player)
+                PhysicsObj? player = _player;
+                int visits = 0;
+                // The cursor follows removals and creations from callbacks (RemoveObject, CreateObject), so each object is
+                // visited once.
+                for (_visitCursor = 0; _visitCursor < _count; _visitCursor++)
                 {
-                    PlayerListener?.PlayerPhysicsUpdated(obj);
+                    PhysicsObj obj = _objects[_visitCursor];
+                    obj.UpdateObject();
+                    visits++;
+                    if (obj == player)
+                    {
+                        PlayerListener?.PlayerPhysicsUpdated(obj);
+                    }
                 }
-            }
 
-            LastTickVisitCount = _count;
+                LastTickVisitCount = visits;
+            }
+            else
+            {
+                LastTickVisitCount = Scene.Tick();
+            }
         }
-        else
+        finally
         {
-            LastTickVisitCount = Scene.Tick();
+            _inUseTime = false;
         }
 
         LastUpdate = CurrentTime;
         return true;
+    }
+
+    private void ThrowIfInTick()
+    {
+        if (_inUseTime)
+        {
+            throw new InvalidOperationException("The world is ticking: Tick, UseTime and SetCurrentTime cannot be called from a callback inside its tick.");
+        }
     }
 }
