@@ -214,12 +214,27 @@ public sealed partial class PhysicsObj
     public bool LastMoveWasAutonomous { get; set; }
 
     /// <summary>The part array and animation seam, or null (retail <c>part_array</c>).</summary>
+    /// <remarks>A <see cref="SimplePartArray"/> belongs to one object at a time; it is released when its object takes another
+    /// part array (or null).</remarks>
+    /// <exception cref="ArgumentException">The value is a <see cref="SimplePartArray"/> that belongs to another object; nothing
+    /// changes.</exception>
     public IPartArray? PartArray
     {
         get => _partArray;
         set
         {
+            // non-retail: retail's part arrays are made per object; a shared one would record two objects' frames and cells
+            if (value is SimplePartArray { Owner: not null } taken && taken.Owner != this)
+            {
+                throw new ArgumentException("This SimplePartArray belongs to another object.", nameof(value));
+            }
+
             Touch();
+            if (_partArray is SimplePartArray previous && !ReferenceEquals(previous, value))
+            {
+                previous.Owner = null;
+            }
+
             _partArray = value;
             if (value is SimplePartArray simple)
             {

@@ -79,14 +79,25 @@ public sealed partial class PhysicsWorld
     private bool _objectMaintenanceActive = true;
 
     /// <summary>The collision sweep. <see cref="FreeSpaceSweep.Instance"/> by default.</summary>
+    /// <remarks>Replacing a <see cref="RetailSweep"/> takes the objects' shadows out of its cells and releases them (its
+    /// <see cref="Terrain.TerrainWorld"/> or <see cref="Cells.WorldCells"/>) for another world, unless the new sweep uses the same cells.</remarks>
     /// <exception cref="ArgumentNullException">The value is null.</exception>
-    /// <exception cref="ArgumentException">The seam's cells already serve another world (see <see cref="RetailSweep"/>).</exception>
+    /// <exception cref="ArgumentException">The seam's cells already serve another world (see <see cref="RetailSweep"/>);
+    /// nothing changes.</exception>
     public CollisionSweep Sweep
     {
         get => _sweep;
         set
         {
             ArgumentNullException.ThrowIfNull(value);
+            if (ReferenceEquals(value, _sweep))
+            {
+                return;
+            }
+
+            value.AttachTo(this);
+            _sweep.DetachFrom(this, value);
+            // The old seam may have released cells the new one shares (a WorldCells' terrain): claim them again.
             value.AttachTo(this);
             _sweep = value;
         }

@@ -21,6 +21,14 @@ public abstract class CollisionSweep
     }
 
     /// <summary>
+    /// Called when <paramref name="world"/> replaces this seam by <paramref name="next"/>. A seam that keeps per-world state
+    /// takes the world's objects out of its cells and releases them for another world.
+    /// </summary>
+    internal virtual void DetachFrom(PhysicsWorld world, CollisionSweep next)
+    {
+    }
+
+    /// <summary>
     /// Sweeps <paramref name="obj"/> from <paramref name="oldPos"/> to <paramref name="newPos"/>. On success fills
     /// <paramref name="result"/> and returns true; on failure (blocked, or no transition available) returns false and
     /// the object keeps its origin.
