@@ -65,6 +65,10 @@ public sealed class RetailSweep : CollisionSweep
     }
 
     /// <inheritdoc />
+    /// <remarks>Answers from <see cref="Cells"/>: the cell <c>AdjustPosition</c> would start the placement from.</remarks>
+    internal override bool FindsCell(PhysicsObj obj, in Position pos) => obj.FindsPlacementCell(this, pos);
+
+    /// <inheritdoc />
     /// <remarks>The world's objects' shadows leave the cells, and the cells (a <see cref="TerrainWorld"/>, or a
     /// <see cref="WorldCells"/> and its terrain) are released so that another world may take them. Nothing happens when
     /// <paramref name="next"/> sweeps the same cells.</remarks>
