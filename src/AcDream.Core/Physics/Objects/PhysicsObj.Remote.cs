@@ -20,10 +20,15 @@ public sealed partial class PhysicsObj
     /// <param name="positionTimestamp">The report's 16-bit position timestamp (POSITION_TS).</param>
     /// <param name="teleportTimestamp">The report's 16-bit teleport timestamp (TELEPORT_TS).</param>
     /// <param name="hasContact">The report says the object is on the ground.</param>
-    /// <returns>True when the report moved, queued or placed the object.</returns>
+    /// <returns>What happened: <see cref="ReceivedPositionResult.Stale"/>, <see cref="ReceivedPositionResult.StaleTeleport"/>
+    /// or <see cref="ReceivedPositionResult.NoContact"/> when the report was not used;
+    /// <see cref="ReceivedPositionResult.Interpolating"/> (or <see cref="ReceivedPositionResult.InterpolatingToUnloadedCell"/>)
+    /// when it was queued; <see cref="ReceivedPositionResult.Placed"/> when the object was placed there; and
+    /// <see cref="ReceivedPositionResult.LeftWorld"/> when the report's cell is not loaded and the object was sent out of the
+    /// world (cell 0), as retail does. The leash is re-armed for the last four.</returns>
     /// <exception cref="ArgumentException"><paramref name="p"/> has a non-finite origin or an invalid rotation; nothing changes.</exception>
     // retail: SmartBox::HandleReceivedPosition (acclient.c:145124)
-    public bool HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)
+    public ReceivedPositionResult HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)
     {
         if (!ManagerMath.IsUsable(p))
         {
@@ -33,7 +38,7 @@ public sealed partial class PhysicsObj
         ushort previousPositionTime = GetUpdateTime(PhysicsTimeStamp.Position);
         if (!NewerEvent(PhysicsTimeStamp.Position, positionTimestamp))
         {
-            return false;
+            return ReceivedPositionResult.Stale;
         }
 
         ushort teleportTime = GetUpdateTime(PhysicsTimeStamp.Teleport);
@@ -43,17 +48,18 @@ public sealed partial class PhysicsObj
         if (staleTeleport)
         {
             _updateTimes[(int)PhysicsTimeStamp.Position] = previousPositionTime;
-            return false;
+            return ReceivedPositionResult.StaleTeleport;
         }
 
-        if (!MoveOrTeleport(p, teleportTimestamp, hasContact))
+        ReceivedPositionResult result = MoveOrTeleportResult(p, teleportTimestamp, hasContact);
+        if (result < ReceivedPositionResult.Interpolating)
         {
-            return false;
+            return result;
         }
 
         // acclient.c:145227: re-arm the leash at the object's own position.
         ConstrainTo(_position, (float)GetStartConstraintDistance(), (float)GetMaxConstraintDistance());
-        return true;
+        return result;
     }
 
     /// <summary>Passes a target-tracking report (context 0 only) to the position manager.</summary>
