@@ -271,4 +271,49 @@ public class RemovalFromCallbacksTests
         Assert.Equal(2, remover.Steps[3]);
         Assert.Equal(110f + 0.2f, three.Position.Frame.Origin.X, 4);
     }
+
+    private sealed class Creator : IStepObserver
+    {
+        private readonly PhysicsWorld _world;
+
+        public Creator(PhysicsWorld world) => _world = world;
+
+        public int[] Steps { get; } = new int[16];
+
+        public void OnStep(PhysicsObj obj, float quantum, double physicsTime)
+        {
+            Steps[obj.Id]++;
+            if (obj.Id == 5 && _world.GetObjectById(1) is null)
+            {
+                // Ids 1 (before every object) and 9 (after): created while object 5 steps.
+                TickTestContext.CreateObject(_world, new Vector3(3f, 3f, 0f), id: 1);
+                TickTestContext.CreateObject(_world, new Vector3(4f, 3f, 0f), id: 9);
+            }
+        }
+    }
+
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)]
+    public void ObjectsCreatedFromACallback_EveryObjectIsVisitedOnce(bool visitEveryObject)
+    {
+        var world = new PhysicsWorld(0.0) { VisitEveryObject = visitEveryObject };
+        var creator = new Creator(world);
+        for (uint id = 3; id <= 7; id += 2)
+        {
+            TickTestContext.CreateObject(world, new Vector3(2f + id, 10f, 0f), id: id).SetVelocity(new Vector3(0f, 1f, 0f));
+        }
+
+        world.StepObserver = creator;
+        world.Tick(0.05);
+
+        // 3, 5, 7 step once each. 1 (ordered before the object in progress) waits for the next tick; 9 (after it) is visited
+        // in this one, as an object woken mid-tick is, but takes no step: it entered the world at this tick's time (dt = 0).
+        // Four visits: 3, 5, 7, 9 (object 5 is not visited a second time although 1 was inserted before it).
+        Assert.Equal(new[] { 0, 0, 0, 1, 0, 1, 0, 1, 0, 0 }, creator.Steps[..10]);
+        Assert.Equal(4, world.LastTickVisitCount);
+        world.Tick(0.10);
+        Assert.Equal(new[] { 0, 1, 0, 2, 0, 2, 0, 2, 0, 1 }, creator.Steps[..10]);
+        Assert.Equal(5, world.LastTickVisitCount);
+    }
 }
