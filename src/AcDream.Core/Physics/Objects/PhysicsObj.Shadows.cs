@@ -163,14 +163,14 @@ public sealed partial class PhysicsObj
         }
     }
 
-    /// <summary>True when one of the object's shadows was made for a cell of landblock <paramref name="blockPrefix"/>
-    /// (<c>0xXXYY0000</c>), loaded or not.</summary>
-    internal bool HasShadowInBlock(uint blockPrefix)
+    /// <summary>True when one of the object's shadows was made for a cell whose id, masked by <paramref name="mask"/>, is
+    /// <paramref name="id"/> (a landblock: mask <c>0xFFFF0000</c>; one cell: mask <c>0xFFFFFFFF</c>), loaded or not.</summary>
+    internal bool HasShadowIn(uint id, uint mask)
     {
         ReadOnlySpan<ShadowObj> shadows = ShadowObjects;
         for (int i = 0; i < shadows.Length; i++)
         {
-            if ((shadows[i].CellId & 0xFFFF0000u) == blockPrefix)
+            if ((shadows[i].CellId & mask) == id)
             {
                 return true;
             }

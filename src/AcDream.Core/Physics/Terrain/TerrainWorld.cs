@@ -60,7 +60,7 @@ public sealed partial class TerrainWorld : ICellSource
 
         _blocks[i] = block;
         // non-retail: objects re-homed into the new cells (retail never swaps the cells under an object)
-        OwnerWorld?.RehomeObjectsInBlock(BlockPrefix(block.BlockX, block.BlockY));
+        OwnerWorld?.RehomeObjectsIn(BlockPrefix(block.BlockX, block.BlockY), 0xFFFF0000u);
     }
 
     /// <summary>Removes the landblock that contains <paramref name="cellOrBlockId"/>; false when none was loaded.</summary>
@@ -86,7 +86,7 @@ public sealed partial class TerrainWorld : ICellSource
         _blocks[i] = null;
         LandBlockCount--;
         // non-retail: objects in the block leave the world (retail unloads blocks only away from objects it simulates)
-        OwnerWorld?.SendObjectsInBlockOutOfWorld(cellOrBlockId & 0xFFFF0000u, leftWorld);
+        OwnerWorld?.SendObjectsOutOfWorld(cellOrBlockId & 0xFFFF0000u, 0xFFFF0000u, leftWorld);
         return true;
     }
 
