@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
@@ -8,7 +9,8 @@ using Xunit;
 namespace AcDream.Core.Tests.Stability;
 
 /// <summary>
-/// <see cref="PhysicsWorld.Tick"/> (and <see cref="PhysicsWorld.UseTime"/>, <see cref="PhysicsWorld.SetCurrentTime"/>) called from
+/// <see cref="PhysicsWorld.Tick"/> (and <see cref="PhysicsWorld.UseTime"/>, <see cref="PhysicsWorld.SetCurrentTime"/>, setting
+/// <see cref="PhysicsWorld.Sweep"/>) called from
 /// a callback inside the same world's tick throws <see cref="InvalidOperationException"/> and changes nothing: the outer tick
 /// goes on and ends exactly as a tick without the call.
 /// </summary>
@@ -46,7 +48,8 @@ public class ReentrantTickRefusedTests
                 {
                     case 0: _world.Tick(_world.CurrentTime + 1.0); break;
                     case 1: _world.UseTime(); break;
-                    default: _world.SetCurrentTime(_world.CurrentTime + 1.0); break;
+                    case 2: _world.SetCurrentTime(_world.CurrentTime + 1.0); break;
+                    default: _world.Sweep = new BlockedTransition(); break;
                 }
             }
             catch (Exception e)
@@ -100,9 +103,11 @@ public class ReentrantTickRefusedTests
     [InlineData(0, false)]
     [InlineData(1, false)]
     [InlineData(2, false)]
+    [InlineData(3, false)]
     [InlineData(0, true)]
     [InlineData(1, true)]
     [InlineData(2, true)]
+    [InlineData(3, true)]
     public void CallFromStepObserver_Throws_AndTheTickEndsAsWithoutIt(int call, bool visitEveryObject)
     {
         PhysicsWorld reference = Scene(visitEveryObject, out PhysicsObj refMover);
@@ -117,6 +122,7 @@ public class ReentrantTickRefusedTests
         Assert.Equal(0.05, observer.ClockSeen); // the clock was not moved by the refused call
         Assert.Equal(0.05, world.CurrentTime);
         Assert.Equal(0.05, world.LastUpdate);
+        Assert.Same(FreeSpaceSweep.Instance, world.Sweep);
         // 2 m/s for one 0.05 s step, bit for bit the reference run's.
         Assert.Equal(refMover.Position.Frame.Origin, mover.Position.Frame.Origin);
         Assert.Equal(refMover.UpdateTime, mover.UpdateTime);

@@ -84,12 +84,14 @@ public sealed partial class PhysicsWorld
     /// <exception cref="ArgumentNullException">The value is null.</exception>
     /// <exception cref="ArgumentException">The seam's cells already serve another world (see <see cref="RetailSweep"/>);
     /// nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">Set from a callback inside this world's tick; nothing changes.</exception>
     public CollisionSweep Sweep
     {
         get => _sweep;
         set
         {
             ArgumentNullException.ThrowIfNull(value);
+            ThrowIfInTick();
             if (ReferenceEquals(value, _sweep))
             {
                 return;
@@ -344,7 +346,7 @@ public sealed partial class PhysicsWorld
     {
         if (_inUseTime)
         {
-            throw new InvalidOperationException("The world is ticking: Tick, UseTime and SetCurrentTime cannot be called from a callback inside its tick.");
+            throw new InvalidOperationException("The world is ticking: Tick, UseTime, SetCurrentTime and Sweep cannot be called or set from a callback inside its tick.");
         }
     }
 }
