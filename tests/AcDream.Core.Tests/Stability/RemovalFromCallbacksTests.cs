@@ -316,4 +316,58 @@ public class RemovalFromCallbacksTests
         Assert.Equal(new[] { 0, 1, 0, 2, 0, 2, 0, 2, 0, 1 }, creator.Steps[..10]);
         Assert.Equal(5, world.LastTickVisitCount);
     }
+
+    private sealed class RemoveThenWake : IStepObserver
+    {
+        private readonly PhysicsWorld _world;
+
+        public RemoveThenWake(PhysicsWorld world) => _world = world;
+
+        public bool Armed { get; set; }
+
+        public void OnStep(PhysicsObj obj, float quantum, double physicsTime)
+        {
+            if (Armed && obj.Id == 2)
+            {
+                Armed = false;
+                _world.RemoveObject(obj);
+                // Object 1 comes before 2: this tick has already passed it (visited, or dormant with its visit evaluated).
+                _world.GetObjectById(1)!.SetVelocity(new Vector3(1f, 0f, 0f));
+            }
+        }
+    }
+
+    [Fact]
+    public void RemovingTheObjectInProgress_ThenWakingAnEarlierOne_MatchesVisitingEveryObject()
+    {
+        (double UpdateTime, Vector3 Origin) Run(bool visitEveryObject, out int dormantBefore)
+        {
+            // On flat ground (no movement manager): the resting object goes inactive, then dormant.
+            var world = new PhysicsWorld(0.0) { VisitEveryObject = visitEveryObject, Sweep = new FlatGroundSweep() };
+            PhysicsObj rest = TickTestContext.CreateObject(world, new Vector3(5f, 10f, 0f), id: 1);
+            PhysicsObj mover = TickTestContext.CreateObject(world, new Vector3(8f, 10f, 0f), id: 2);
+            mover.SetVelocity(new Vector3(0f, 1f, 0f));
+            var observer = new RemoveThenWake(world);
+            world.StepObserver = observer;
+            for (int k = 1; k <= 10; k++)
+            {
+                world.Tick(k * 0.05);
+            }
+
+            dormantBefore = world.DormantCount;
+            observer.Armed = true;
+            world.Tick(0.55);
+            world.Tick(0.60);
+            return (rest.UpdateTime, rest.Position.Frame.Origin);
+        }
+
+        var retail = Run(true, out _);
+        var scene = Run(false, out int dormant);
+
+        Assert.Equal(1, dormant); // object 1 was dormant when it was woken
+        // Woken at 0.55 after its place in the order: it steps at 0.60 only, one 0.05 s step, as when every object is visited.
+        Assert.Equal(retail.UpdateTime, scene.UpdateTime);
+        Assert.Equal(retail.Origin, scene.Origin);
+        Assert.True(scene.Origin.X > 5f);
+    }
 }
