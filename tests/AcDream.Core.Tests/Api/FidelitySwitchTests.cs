@@ -123,8 +123,8 @@ public class FidelitySwitchTests
         Vector3 target = start + new Vector3(0f, 2f, 0f);
         PhysicsObj retail = Creature(PhysicsProfile.Retail, start);
         PhysicsObj snap = Creature(PhysicsProfile.Retail.With(remoteSmoothing: RemoteSmoothing.Snap), start);
-        Assert.True(retail.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true));
-        Assert.True(snap.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true));
+        Assert.True(retail.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true) >= ReceivedPositionResult.Interpolating);
+        Assert.True(snap.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true) >= ReceivedPositionResult.Interpolating);
         Assert.True(retail.IsInterpolating());
         Assert.Equal(start, retail.Position.Frame.Origin);
         Assert.False(snap.IsInterpolating());
@@ -143,9 +143,9 @@ public class FidelitySwitchTests
         foreach (PhysicsObj c in new[] { ext, snap })
         {
             c.World.SetCurrentTime(0.1);
-            Assert.True(c.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 52f, 0f)), 1, 0, true));
+            Assert.True(c.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 52f, 0f)), 1, 0, true) >= ReceivedPositionResult.Interpolating);
             c.World.Tick(0.6);
-            Assert.True(c.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 54f, 0f)), 2, 0, true));
+            Assert.True(c.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 54f, 0f)), 2, 0, true) >= ReceivedPositionResult.Interpolating);
             c.World.Tick(0.7);
         }
 

@@ -27,7 +27,7 @@ public class RemotePositionTests
     public void Report_InContactNearThePlayer_QueuesAndRearmsTheConstraintAtTheBody()
     {
         ManagerScene s = Measured();
-        Assert.True(s.Creature.HandleReceivedPosition(North(2f), 1, 0, true));
+        Assert.Equal(ReceivedPositionResult.Interpolating, s.Creature.HandleReceivedPosition(North(2f), 1, 0, true));
         Assert.Equal(1, s.Interpolation!.Count);
         ConstraintManager cm = s.Managers.ConstraintManager!;
         Assert.True(cm.IsConstrained);
@@ -40,23 +40,23 @@ public class RemotePositionTests
     public void Report_NotNewerThanTheLastPositionTimestamp_IsDropped()
     {
         ManagerScene s = Measured();
-        Assert.True(s.Creature.HandleReceivedPosition(North(2f), 5, 0, true));
-        Assert.False(s.Creature.HandleReceivedPosition(North(4f), 5, 0, true));   // duplicate
-        Assert.False(s.Creature.HandleReceivedPosition(North(6f), 4, 0, true));   // late
+        Assert.Equal(ReceivedPositionResult.Interpolating, s.Creature.HandleReceivedPosition(North(2f), 5, 0, true));
+        Assert.Equal(ReceivedPositionResult.Stale, s.Creature.HandleReceivedPosition(North(4f), 5, 0, true));   // duplicate
+        Assert.Equal(ReceivedPositionResult.Stale, s.Creature.HandleReceivedPosition(North(6f), 4, 0, true));   // late
         Assert.Equal(1, s.Interpolation!.Count);
         // 16-bit wrap (newer_event): 0 -> 30000 -> 60000 are newer (gaps <= 0x7FFF); then 2 is newer than 60000 because the
         // gap 59998 exceeds 0x7FFF and 2 < 60000.
         var w = Measured();
-        Assert.True(w.Creature.HandleReceivedPosition(North(2f), 30000, 0, true));
-        Assert.True(w.Creature.HandleReceivedPosition(North(3f), 60000, 0, true));
-        Assert.True(w.Creature.HandleReceivedPosition(North(4f), 2, 0, true));
+        Assert.Equal(ReceivedPositionResult.Interpolating, w.Creature.HandleReceivedPosition(North(2f), 30000, 0, true));
+        Assert.Equal(ReceivedPositionResult.Interpolating, w.Creature.HandleReceivedPosition(North(3f), 60000, 0, true));
+        Assert.Equal(ReceivedPositionResult.Interpolating, w.Creature.HandleReceivedPosition(North(4f), 2, 0, true));
     }
 
     [Fact]
     public void Report_WithoutContact_IsIgnoredButConsumesItsTimestamp()
     {
         ManagerScene s = Measured();
-        Assert.False(s.Creature.HandleReceivedPosition(North(2f, 3f), 1, 0, false));
+        Assert.Equal(ReceivedPositionResult.NoContact, s.Creature.HandleReceivedPosition(North(2f, 3f), 1, 0, false));
         Assert.False(s.Creature.IsInterpolating());
         Assert.Null(s.Creature.PositionManager?.ConstraintManager);
         Assert.Equal((ushort)1, s.Creature.GetUpdateTime(PhysicsTimeStamp.Position));
@@ -69,7 +69,7 @@ public class RemotePositionTests
         s.World.Tick(0.1);   // player_distance = 100
         Assert.True(s.Creature.PlayerDistance >= 96f);
         Position p = ManagerScene.At(new Vector3(96f, 198f, 0f));
-        Assert.True(s.Creature.HandleReceivedPosition(p, 1, 0, true));
+        Assert.Equal(ReceivedPositionResult.Placed, s.Creature.HandleReceivedPosition(p, 1, 0, true));
         Assert.False(s.Creature.IsInterpolating());
         Assert.Equal(p.Frame.Origin, s.Creature.Position.Frame.Origin);
     }
@@ -80,11 +80,11 @@ public class RemotePositionTests
         ManagerScene s = Measured();
         s.Creature.HandleReceivedPosition(North(2f), 1, 0, true);
         Position p = ManagerScene.At(Start + new Vector3(30f, 0f, 0f));
-        Assert.True(s.Creature.HandleReceivedPosition(p, 2, 1, false));
+        Assert.Equal(ReceivedPositionResult.Placed, s.Creature.HandleReceivedPosition(p, 2, 1, false));
         Assert.False(s.Creature.IsInterpolating());
         Assert.Equal(p.Frame.Origin, s.Creature.Position.Frame.Origin);
         Assert.Equal(0x1012u, (uint)s.Ground.LastPlacementFlags);
-        Assert.False(s.Creature.HandleReceivedPosition(North(5f), 3, 0, true));
+        Assert.Equal(ReceivedPositionResult.StaleTeleport, s.Creature.HandleReceivedPosition(North(5f), 3, 0, true));
         Assert.Equal((ushort)2, s.Creature.GetUpdateTime(PhysicsTimeStamp.Position));
     }
 

@@ -86,13 +86,13 @@ public class InterpolationStreamEdgeCasesTests
         s.World.Tick(0.05); // measures the player distance (a report >= 96 m from the player would snap instead)
         Position p10 = ManagerScene.At(new Vector3(50f, 52f, 0f));
         Position p12 = ManagerScene.At(new Vector3(50f, 54f, 0f));
-        Assert.True(s.Creature.HandleReceivedPosition(p10, 10, 0, true));
-        Assert.True(s.Creature.HandleReceivedPosition(p12, 12, 0, true));
+        Assert.True(s.Creature.HandleReceivedPosition(p10, 10, 0, true) >= ReceivedPositionResult.Interpolating);
+        Assert.True(s.Creature.HandleReceivedPosition(p12, 12, 0, true) >= ReceivedPositionResult.Interpolating);
         Assert.Equal(2, s.Interpolation!.Count);
         ulong before = SceneTestContext.Hash(s.Creature);
         foreach ((ushort ts, float y) in new (ushort, float)[] { (12, 58f), (11, 53f), (10, 51f) })
         {
-            Assert.False(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, y, 0f)), ts, 0, true));
+            Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, y, 0f)), ts, 0, true) < ReceivedPositionResult.Interpolating);
             Assert.Equal(2, s.Interpolation.Count);
             Assert.Equal(p12, s.Interpolation.GetNode(1).Position);
             Assert.Equal((ushort)12, s.Creature.GetUpdateTime(PhysicsTimeStamp.Position));
@@ -107,11 +107,11 @@ public class InterpolationStreamEdgeCasesTests
         // than 0x8000), then 0x0001 is newer than 0xFFFF across the wrap, and 0xFFFE is older than 0x0001.
         ManagerScene s = Scene();
         s.World.Tick(0.05);
-        Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 52f, 0f)), 0x7000, 0, true));
-        Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 51f, 0f)), 0xE000, 0, true));
-        Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 52f, 0f)), 0xFFFF, 0, true));
-        Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 53f, 0f)), 0x0001, 0, true));
-        Assert.False(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 60f, 0f)), 0xFFFE, 0, true));
+        Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 52f, 0f)), 0x7000, 0, true) >= ReceivedPositionResult.Interpolating);
+        Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 51f, 0f)), 0xE000, 0, true) >= ReceivedPositionResult.Interpolating);
+        Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 52f, 0f)), 0xFFFF, 0, true) >= ReceivedPositionResult.Interpolating);
+        Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 53f, 0f)), 0x0001, 0, true) >= ReceivedPositionResult.Interpolating);
+        Assert.True(s.Creature.HandleReceivedPosition(ManagerScene.At(new Vector3(50f, 60f, 0f)), 0xFFFE, 0, true) < ReceivedPositionResult.Interpolating);
         Assert.Equal(4, s.Interpolation!.Count);
         Assert.Equal((ushort)1, s.Creature.GetUpdateTime(PhysicsTimeStamp.Position));
     }

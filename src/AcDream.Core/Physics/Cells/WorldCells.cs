@@ -34,15 +34,52 @@ public sealed class WorldCells : ICellSource
     public int EnvCellCount => _envCells.Count;
 
     /// <summary>Adds (or replaces) an indoor cell.</summary>
+    /// <remarks>Objects of the world these cells serve that stand in the cell, or whose shadows reach into it, are listed in the
+    /// new cell (their shadows leave a replaced cell); positions and cells are kept. Call between ticks (docs/stability.md,
+    /// "Landblocks changing under objects").</remarks>
     /// <exception cref="ArgumentNullException"><paramref name="cell"/> is null.</exception>
+    /// <exception cref="InvalidOperationException">Called from a callback inside the tick of the world these cells serve;
+    /// nothing changes.</exception>
     public void AddEnvCell(EnvCell cell)
     {
         ArgumentNullException.ThrowIfNull(cell);
+        ThrowIfOwnerTicking();
         _envCells[cell.CellId] = cell;
+        // non-retail: objects re-homed into the new cell (retail never swaps a cell under an object)
+        Owner?.RehomeObjectsIn(cell.CellId, 0xFFFFFFFFu);
     }
 
     /// <summary>Removes an indoor cell; false when it was not loaded.</summary>
-    public bool RemoveEnvCell(uint cellId) => _envCells.Remove(cellId);
+    /// <param name="cellId">The indoor cell's id.</param>
+    /// <param name="leftWorld">When given, receives every object that left the world because it stood in the cell.</param>
+    /// <remarks>Objects standing in the cell leave the world as retail's lost cell (<see cref="Objects.PhysicsObj.CellId"/> 0,
+    /// no shadows, last position kept, not simulated until placed again); objects elsewhere keep only their shadows in cells
+    /// still loaded. Call between ticks.</remarks>
+    /// <exception cref="InvalidOperationException">Called from a callback inside the tick of the world these cells serve;
+    /// nothing changes.</exception>
+    public bool RemoveEnvCell(uint cellId, ICollection<Objects.PhysicsObj>? leftWorld = null)
+    {
+        ThrowIfOwnerTicking();
+        if (!_envCells.Remove(cellId))
+        {
+            return false;
+        }
+
+        // non-retail: objects in the cell leave the world (retail unloads cells only away from objects it simulates)
+        Owner?.SendObjectsOutOfWorld(cellId, 0xFFFFFFFFu, leftWorld);
+        return true;
+    }
+
+    // The world whose objects stand in these cells: this set's owner, else its terrain's.
+    private PhysicsWorld? Owner => OwnerWorld ?? Terrain.OwnerWorld;
+
+    private void ThrowIfOwnerTicking()
+    {
+        if (Owner is { IsTicking: true })
+        {
+            throw new InvalidOperationException("Cells cannot change inside a tick of the world whose objects stand in them.");
+        }
+    }
 
     /// <summary>The loaded indoor cell <paramref name="cellId"/>, or null.</summary>
     // retail: CEnvCell::GetVisible (acclient.c:349673)

@@ -23,6 +23,9 @@ public sealed class FPHook : PhysicsObjHook
 
     internal FPHook? PoolNext { get; set; }
 
+    /// <summary>True while the hook sits in its world's free list.</summary>
+    internal bool InPool { get; set; }
+
     // retail: FPHook::FPHook (acclient.c:329679)
     internal void Init(PhysicsHookType type, double timeCreated, double delta, float startValue, float endValue, uint userData)
     {

@@ -17,15 +17,23 @@ public sealed partial class PhysicsObj
     /// <paramref name="partIndex"/> (the parent's own frame when the part does not exist). The child leaves the world
     /// simulation: update_object skips parented objects.
     /// </summary>
-    /// <exception cref="ArgumentException">The parent is this object, belongs to another world, or the frame is invalid.</exception>
+    /// <returns>True when attached; false when <paramref name="parent"/> already holds this object as a child.</returns>
+    /// <exception cref="ArgumentException">The parent is this object or one of its descendants (a cycle), belongs to another
+    /// world, or the frame is invalid; nothing changes.</exception>
     // retail: CPhysicsObj::set_parent (acclient.c:323002), simplified: no shadow cells
     public bool SetParent(PhysicsObj parent, uint partIndex, in Frame frame)
     {
         Touch();
         ArgumentNullException.ThrowIfNull(parent);
-        if (parent == this || parent.World != World || !frame.IsValid() || !VectorMath.IsFinite(frame.Origin))
+        if (parent.World != World || !frame.IsValid() || !VectorMath.IsFinite(frame.Origin))
         {
             throw new ArgumentException("Invalid parent or frame.", nameof(parent));
+        }
+
+        // non-retail: retail accepts a parent that is a descendant; the child lists would then recurse without end
+        if (IsSelfOrAncestorOf(parent))
+        {
+            throw new ArgumentException("The parent is this object or one of its descendants (a parent cycle).", nameof(parent));
         }
 
         parent.Touch();
@@ -47,6 +55,21 @@ public sealed partial class PhysicsObj
         }
 
         return true;
+    }
+
+    /// <summary>True when <paramref name="obj"/> is this object or hangs (through any number of parents) from it.</summary>
+    private bool IsSelfOrAncestorOf(PhysicsObj obj)
+    {
+        // The parent chain is acyclic (every SetParent checks this), so the walk ends at a root.
+        for (PhysicsObj? o = obj; o is not null; o = o.Parent)
+        {
+            if (o == this)
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     /// <summary>Detaches this object from its parent; its clock restarts and its transient state is cleared.</summary>

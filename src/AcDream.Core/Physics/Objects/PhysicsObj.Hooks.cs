@@ -64,7 +64,15 @@ public sealed partial class PhysicsObj
         {
             // Read before Execute: a hook added during Execute goes to the head and waits for the next step.
             PhysicsObjHook? next = h.Next;
-            if (h.Execute(this))
+            bool done = h.Execute(this);
+            // non-retail: Execute removed the object from its world, which emptied the list (pooled hooks are back in the
+            // pool): the walk stops rather than run or return those hooks again
+            if (h.Owner != this)
+            {
+                return;
+            }
+
+            if (done)
             {
                 UnlinkHook(h);
                 h.OnRemoved(World);
@@ -73,16 +81,27 @@ public sealed partial class PhysicsObj
             h = next;
         }
 
-        if (_animHookCount > 0)
+        int n = _animHookCount;
+        if (n > 0)
         {
-            for (int i = 0; i < _animHookCount; i++)
+            // non-retail: retail re-reads the growing count, so an anim hook queued by an anim hook ran in the same pass (and a
+            // hook that re-queues itself never returned); the hooks queued during the pass wait for the next step
+            for (int i = 0; i < n; i++)
             {
                 _animHooks[i]!.Execute(this);
+                // non-retail: Execute removed the object from its world, which dropped the queue
+                if (RemovedFromWorld)
+                {
+                    return;
+                }
             }
 
-            // Retail shrinks the array to its count, then empties it; we keep the capacity so the tick does not allocate.
-            Array.Clear(_animHooks, 0, _animHookCount);
-            _animHookCount = 0;
+            // Retail shrinks the array to its count, then empties it; we keep the capacity so the tick does not allocate, and
+            // move the hooks queued during the pass to the front.
+            int queued = _animHookCount - n;
+            Array.Copy(_animHooks, n, _animHooks, 0, queued);
+            Array.Clear(_animHooks, queued, n);
+            _animHookCount = queued;
         }
     }
 

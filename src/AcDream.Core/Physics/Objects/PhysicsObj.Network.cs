@@ -34,7 +34,11 @@ public sealed partial class PhysicsObj
     /// <returns>True when the position was used.</returns>
     /// <exception cref="ArgumentException">The frame is not valid; state unchanged.</exception>
     // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450)
-    public bool MoveOrTeleport(in Position p, ushort teleportTimestamp, bool contact)
+    public bool MoveOrTeleport(in Position p, ushort teleportTimestamp, bool contact) =>
+        MoveOrTeleportResult(p, teleportTimestamp, contact) >= ReceivedPositionResult.Interpolating;
+
+    // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450), answering which branch it took
+    private ReceivedPositionResult MoveOrTeleportResult(in Position p, ushort teleportTimestamp, bool contact)
     {
         Touch();
         if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
@@ -46,32 +50,41 @@ public sealed partial class PhysicsObj
         bool older = System.Math.Abs(stored - teleportTimestamp) > 0x7FFF ? stored < teleportTimestamp : teleportTimestamp < stored;
         if (older)
         {
-            return false;
+            return ReceivedPositionResult.StaleTeleport;
         }
 
         if (NewerEvent(PhysicsTimeStamp.Teleport, teleportTimestamp) || CellId == 0)
         {
+            bool loaded = World.Sweep.FindsCell(this, p);
             TeleportHook();
-            SetPosition(p, SetPositionFlags.Teleport | SetPositionFlags.Slide | SetPositionFlags.SendPositionEvent);
-            return true;
+            return Placement(loaded, SetPosition(p, SetPositionFlags.Teleport | SetPositionFlags.Slide | SetPositionFlags.SendPositionEvent));
         }
 
         if (!contact)
         {
-            return false;
+            return ReceivedPositionResult.NoContact;
         }
 
+        bool cellLoaded = World.Sweep.FindsCell(this, p);
         if (PlayerDistance >= PhysicsGlobals.PlayerActivityDistance)
         {
             PositionManager?.StopInterpolating();
-            SetPositionSimple(p, true);
-            return true;
+            return Placement(cellLoaded, SetPositionSimple(p, true));
         }
 
         // non-retail: fidelity switch PhysicsProfile.RemoteSmoothing; the retail profile runs InterpolateTo(p, IsMovingTo())
-        FollowRemoteReport(p);
-        return true;
+        if (FollowRemoteReport(p, out SetPositionError placed))
+        {
+            return cellLoaded ? ReceivedPositionResult.Interpolating : ReceivedPositionResult.InterpolatingToUnloadedCell;
+        }
+
+        return Placement(cellLoaded, placed);
     }
+
+    private static ReceivedPositionResult Placement(bool cellLoaded, SetPositionError e) =>
+        !cellLoaded ? ReceivedPositionResult.LeftWorld
+        : e == SetPositionError.Ok ? ReceivedPositionResult.Placed
+        : ReceivedPositionResult.PlacementFailed;
 
     /// <summary>Drops every move-to, stickiness, interpolation, constraint and target before a teleport.</summary>
     // retail: CPhysicsObj::teleport_hook (acclient.c:322236)

@@ -122,7 +122,9 @@ public sealed partial class PhysicsObj
     /// Enters the world at <paramref name="p"/>: stores the position, restarts the clock, places the object with SLIDE and,
     /// on success, activates it and tells the part array and movement manager.
     /// </summary>
-    /// <returns>False when the object has a parent or could not be placed.</returns>
+    /// <returns>False when the object has a parent or could not be placed. False, with nothing changed, when the position's
+    /// cell does not exist or is not loaded (an outdoor cell whose landblock the sweep's cells do not hold, an indoor cell not
+    /// loaded, an invalid cell id): the object stays where it was, out of the world if it was.</returns>
     /// <exception cref="ArgumentException">The frame is not valid; state unchanged.</exception>
     // retail: CPhysicsObj::enter_world(Position*) (acclient.c:323440) -> enter_world(slide) (acclient.c:323345)
     public bool EnterWorld(in Position p)
@@ -131,6 +133,12 @@ public sealed partial class PhysicsObj
         if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
         {
             throw new ArgumentException("Position frame must be valid.", nameof(p));
+        }
+
+        // non-retail: retail stores the position and sends the object to the lost cell; a client is told instead
+        if (!World.Sweep.FindsCell(this, p))
+        {
+            return false;
         }
 
         StorePosition(p);
@@ -243,7 +251,8 @@ public sealed partial class PhysicsObj
         }
 
         World.Sweep.HandleAllCollisions(this, prevContact, prevOnWalkable);
-        if (CellId != 0)
+        // non-retail: a collision listener may have removed the object from its world: it casts no shadow any more
+        if (CellId != 0 && !RemovedFromWorld)
         {
             World.Sweep.UpdateCellShadows(this);
         }

@@ -16,9 +16,9 @@ public sealed partial class PhysicsObj
     /// </summary>
     /// <remarks><para>SmartBox's parent and placement-frame handling (unset_parent, SetPlacementFrame) and its error counter are
     /// the client's concern and not ported here.</para>
-    /// <para>Before the first report the network layer gives the object a part array from its Setup, a movement manager
-    /// (<see cref="GetMinterp"/>) and its first position (<see cref="EnterWorld"/>); between reports it keeps the part array's
-    /// root motion at the motion the server last reported (docs/interpolation.md, "What a network layer sets first").</para></remarks>
+    /// <para>Before the first report the network layer gives the object a part array from its Setup, a motion table and
+    /// a weenie, and its first position (<see cref="EnterWorld"/>); between reports the server's MovementEvents drive its motion
+    /// (<see cref="Motion.MovementEvent.ApplyInterpretedMotion"/>; docs/interpolation.md, "What a network layer sets first").</para></remarks>
     /// <param name="p">The reported position: the cell id and the frame local to that cell's landblock, as the server's
     /// position update carries them.</param>
     /// <param name="positionTimestamp">The update's 16-bit position sequence (retail POSITION_TS), compared with wrap-around: a
@@ -29,10 +29,15 @@ public sealed partial class PhysicsObj
     /// start).</param>
     /// <param name="hasContact">The update's contact flag: the object stands on the ground. Without contact a nearby object is
     /// not interpolated (its own physics carries it, e.g. through a jump) unless the report teleports it.</param>
-    /// <returns>True when the report moved, queued or placed the object; false when it was dropped (stale or not used).</returns>
+    /// <returns>What happened: <see cref="ReceivedPositionResult.Stale"/>, <see cref="ReceivedPositionResult.StaleTeleport"/>
+    /// or <see cref="ReceivedPositionResult.NoContact"/> when the report was not used;
+    /// <see cref="ReceivedPositionResult.Interpolating"/> (or <see cref="ReceivedPositionResult.InterpolatingToUnloadedCell"/>)
+    /// when it was queued; <see cref="ReceivedPositionResult.Placed"/> when the object was placed there; and
+    /// <see cref="ReceivedPositionResult.LeftWorld"/> when the report's cell is not loaded and the object was sent out of the
+    /// world (cell 0), as retail does. The leash is re-armed for the last four.</returns>
     /// <exception cref="ArgumentException"><paramref name="p"/> has a non-finite origin or an invalid rotation; nothing changes.</exception>
     // retail: SmartBox::HandleReceivedPosition (acclient.c:145124)
-    public bool HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)
+    public ReceivedPositionResult HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)
     {
         if (!ManagerMath.IsUsable(p))
         {
@@ -42,7 +47,7 @@ public sealed partial class PhysicsObj
         ushort previousPositionTime = GetUpdateTime(PhysicsTimeStamp.Position);
         if (!NewerEvent(PhysicsTimeStamp.Position, positionTimestamp))
         {
-            return false;
+            return ReceivedPositionResult.Stale;
         }
 
         ushort teleportTime = GetUpdateTime(PhysicsTimeStamp.Teleport);
@@ -52,17 +57,18 @@ public sealed partial class PhysicsObj
         if (staleTeleport)
         {
             _updateTimes[(int)PhysicsTimeStamp.Position] = previousPositionTime;
-            return false;
+            return ReceivedPositionResult.StaleTeleport;
         }
 
-        if (!MoveOrTeleport(p, teleportTimestamp, hasContact))
+        ReceivedPositionResult result = MoveOrTeleportResult(p, teleportTimestamp, hasContact);
+        if (result < ReceivedPositionResult.Interpolating)
         {
-            return false;
+            return result;
         }
 
         // acclient.c:145227: re-arm the leash at the object's own position.
         ConstrainTo(_position, (float)GetStartConstraintDistance(), (float)GetMaxConstraintDistance());
-        return true;
+        return result;
     }
 
     /// <summary>Passes a target-tracking report (context 0 only) to the position manager.</summary>

@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Primitives;
@@ -35,6 +36,12 @@ public sealed partial class PhysicsObj
     internal void AddShadowsToCells(CellArray cellArray, ObjCell? ownCell)
     {
         ArgumentNullException.ThrowIfNull(cellArray);
+        // non-retail: an object removed from its world (or hanging from one) never lists itself in a cell again
+        if (RemovedFromWorld)
+        {
+            return;
+        }
+
         if ((_state & PhysicsState.ParticleEmitter) != 0)
         {
             AddParticleShadowToCell(ownCell);
@@ -154,6 +161,66 @@ public sealed partial class PhysicsObj
             RemoveShadowsFromCells();
             AddShadowsToCells(sweep.LastTransition.CellArray, sweep.Cells.GetVisible(CellId));
         }
+    }
+
+    /// <summary>True when one of the object's shadows was made for a cell whose id, masked by <paramref name="mask"/>, is
+    /// <paramref name="id"/> (a landblock: mask <c>0xFFFF0000</c>; one cell: mask <c>0xFFFFFFFF</c>), loaded or not.</summary>
+    internal bool HasShadowIn(uint id, uint mask)
+    {
+        ReadOnlySpan<ShadowObj> shadows = ShadowObjects;
+        for (int i = 0; i < shadows.Length; i++)
+        {
+            if ((shadows[i].CellId & mask) == id)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>
+    /// Lists the object's shadows again in the cells <paramref name="sweep"/> holds now (after a landblock was loaded, replaced
+    /// or removed): an object with a physics BSP or cylinder spheres as <see cref="CalcCrossCells"/> does; any other in the
+    /// cells its collision spheres (the sphere a sweep would use) overlap where it stands, as a placement lists them.
+    /// </summary>
+    // non-retail: retail never swaps the cells under an object (LScape loads blocks around the viewer before objects arrive)
+    internal void RehomeShadows(RetailSweep sweep)
+    {
+        IPartArray? parts = PartArray;
+        bool hasCyl = parts is IPartCollision pc && pc.CylSpheres.Length != 0;
+        if ((State & PhysicsState.HasPhysicsBsp) != 0 || hasCyl)
+        {
+            CalcCrossCells(sweep);
+            return;
+        }
+
+        CellArray ca = sweep.CrossCells;
+        ca.Clear();
+        Position p = Position;
+        Span<Sphere> spheres = stackalloc Sphere[2];
+        int n;
+        if (parts is not null && parts.NumSpheres != 0)
+        {
+            ReadOnlySpan<Sphere> own = parts.Spheres;
+            n = own.Length <= 2 ? own.Length : 2;
+            float s = Scale;
+            for (int i = 0; i < n; i++)
+            {
+                Vector3 c = own[i].Center;
+                spheres[i] = new Sphere(p.LocalToGlobal(p, new Vector3(s * c.X, s * c.Y, s * c.Z)), s * own[i].Radius);
+            }
+        }
+        else
+        {
+            Sphere d = Sphere.Dummy;
+            spheres[0] = new Sphere(p.LocalToGlobal(p, d.Center), d.Radius);
+            n = 1;
+        }
+
+        CellList.FindCellList(sweep.Cells, p, spheres[..n], ca, false, null);
+        RemoveShadowsFromCells();
+        AddShadowsToCells(ca, sweep.Cells.GetVisible(CellId));
     }
 
     /// <summary>

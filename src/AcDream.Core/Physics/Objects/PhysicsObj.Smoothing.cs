@@ -17,14 +17,16 @@ public sealed partial class PhysicsObj
     /// zero otherwise.</summary>
     public Vector3 ExtrapolationVelocity => _extrapolating ? _extrapolationVelocity : Vector3.Zero;
 
-    // The in-range branch of MoveOrTeleport under the world's profile: retail interpolates; the other modes place the body.
-    private void FollowRemoteReport(in Position p)
+    // The in-range branch of MoveOrTeleport under the world's profile: retail interpolates (true); the other modes place the
+    // body (false, with the placement's result).
+    private bool FollowRemoteReport(in Position p, out SetPositionError placed)
     {
         RemoteSmoothing mode = World.Profile.RemoteSmoothing;
+        placed = SetPositionError.Ok;
         if (mode == RemoteSmoothing.Retail)
         {
             InterpolateTo(p, IsMovingTo());
-            return;
+            return true;
         }
 
         PositionManager?.StopInterpolating();
@@ -44,7 +46,8 @@ public sealed partial class PhysicsObj
             _lastReportTime = now;
         }
 
-        SetPositionSimple(p, true);
+        placed = SetPositionSimple(p, true);
+        return false;
     }
 
     // LinearExtrapolation: replaces the step's offset origin (root motion) by the extrapolation velocity × quantum.

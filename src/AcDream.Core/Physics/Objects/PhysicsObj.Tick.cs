@@ -50,7 +50,8 @@ public sealed partial class PhysicsObj
         double start = UpdateTime;
         world.PhysicsTime = start;
         var slicer = new QuantumSlicer(world.Profile, start, world.CurrentTime);
-        while (slicer.Next(out double quantum))
+        // non-retail: a callback that removed the object from its world ends its update
+        while (!RemovedFromWorld && slicer.Next(out double quantum))
         {
             world.PhysicsTime = slicer.Time;
             UpdateObjectInternal((float)quantum);
@@ -66,6 +67,12 @@ public sealed partial class PhysicsObj
     {
         // non-retail: the optional step observer (tests, diagnostics)
         World.StepObserver?.OnStep(this, quantum, World.PhysicsTime);
+        // non-retail: the observer removed the object from its world: the step ends here
+        if (RemovedFromWorld)
+        {
+            return;
+        }
+
         if ((_transientState & TransientState.Active) != 0)
         {
             if (CellId == 0)
@@ -81,6 +88,12 @@ public sealed partial class PhysicsObj
             JumpedThisFrame = false;
             Position newPos = new(_position.ObjCellId, Frame.Identity);
             UpdatePositionInternal(quantum, ref newPos.Frame);
+            // non-retail: a hook removed the object from its world: no sweep, no commit, no shadows
+            if (RemovedFromWorld)
+            {
+                return;
+            }
+
             IPartArray? parts = PartArray;
             if (parts is not null && parts.NumSpheres != 0)
             {

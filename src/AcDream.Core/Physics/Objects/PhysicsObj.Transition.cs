@@ -134,6 +134,25 @@ public sealed partial class PhysicsObj
         }
     }
 
+    /// <summary>True when a placement of the object at <paramref name="pos"/> through <paramref name="sweep"/> finds a loaded cell
+    /// (the cell <see cref="SetPositionInternal"/> would start from); false when it would send the object to the lost cell.</summary>
+    // non-retail: EnterWorld's check before it changes anything (retail's enter_world stores the position and goes to the lost cell)
+    internal bool FindsPlacementCell(RetailSweep sweep, in Position pos)
+    {
+        IPartArray? parts = PartArray;
+        Vector3 spherePoint = Sphere.Dummy.Center;
+        if (parts is not null && parts.NumSpheres != 0)
+        {
+            // SPHEREPATH::init_sphere's scaled first centre, as SetPositionInternal hands it to AdjustPosition.
+            Vector3 c = parts.Spheres[0].Center;
+            float s = Scale;
+            spherePoint = new Vector3(s * c.X, s * c.Y, s * c.Z);
+        }
+
+        Position p = pos;
+        return AdjustPosition(sweep, ref p, spherePoint) is not null;
+    }
+
     // retail: CPhysicsObj::AdjustPosition (acclient.c:319116); indoor branch without the outdoor fallback
     private static ObjCell? AdjustPosition(RetailSweep sweep, ref Position p, Vector3 spherePoint)
     {

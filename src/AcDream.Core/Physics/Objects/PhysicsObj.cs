@@ -82,6 +82,10 @@ public sealed partial class PhysicsObj
     /// <summary>Index in the world's object list; -1 once removed.</summary>
     internal int WorldIndex { get; set; }
 
+    /// <summary>True once <see cref="PhysicsWorld.RemoveObject"/> took the object out of its world (for good): a step in
+    /// progress stops, and the object never lists itself in a cell again.</summary>
+    internal bool RemovedFromWorld { get; set; }
+
     /// <summary>The object's id (retail <c>id</c>).</summary>
     public uint Id { get; }
 
@@ -210,12 +214,27 @@ public sealed partial class PhysicsObj
     public bool LastMoveWasAutonomous { get; set; }
 
     /// <summary>The part array and animation seam, or null (retail <c>part_array</c>).</summary>
+    /// <remarks>A <see cref="SimplePartArray"/> belongs to one object at a time; it is released when its object takes another
+    /// part array (or null).</remarks>
+    /// <exception cref="ArgumentException">The value is a <see cref="SimplePartArray"/> that belongs to another object; nothing
+    /// changes.</exception>
     public IPartArray? PartArray
     {
         get => _partArray;
         set
         {
+            // non-retail: retail's part arrays are made per object; a shared one would record two objects' frames and cells
+            if (value is SimplePartArray { Owner: not null } taken && taken.Owner != this)
+            {
+                throw new ArgumentException("This SimplePartArray belongs to another object.", nameof(value));
+            }
+
             Touch();
+            if (_partArray is SimplePartArray previous && !ReferenceEquals(previous, value))
+            {
+                previous.Owner = null;
+            }
+
             _partArray = value;
             if (value is SimplePartArray simple)
             {

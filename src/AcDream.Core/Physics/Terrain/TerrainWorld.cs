@@ -42,10 +42,16 @@ public sealed partial class TerrainWorld : ICellSource
     }
 
     /// <summary>Adds a built landblock, replacing any landblock already at its place.</summary>
+    /// <remarks>Objects of the world these cells serve that stand in the block, or whose shadows reach into it, are listed in
+    /// the new cells (their shadows leave a replaced block's old cells); their positions, cells and contact state are kept, so
+    /// terrain that changed height under a resting object is met at its next move. Call between ticks.</remarks>
     /// <exception cref="ArgumentNullException"><paramref name="block"/> is null.</exception>
+    /// <exception cref="InvalidOperationException">Called from a callback inside the tick of the world these cells serve;
+    /// nothing changes.</exception>
     public void AddLandBlock(LandBlock block)
     {
         ArgumentNullException.ThrowIfNull(block);
+        ThrowIfOwnerTicking();
         int i = Index(block.BlockX, block.BlockY);
         if (_blocks[i] is null)
         {
@@ -53,11 +59,25 @@ public sealed partial class TerrainWorld : ICellSource
         }
 
         _blocks[i] = block;
+        // non-retail: objects re-homed into the new cells (retail never swaps the cells under an object)
+        OwnerWorld?.RehomeObjectsIn(BlockPrefix(block.BlockX, block.BlockY), 0xFFFF0000u);
     }
 
     /// <summary>Removes the landblock that contains <paramref name="cellOrBlockId"/>; false when none was loaded.</summary>
-    public bool RemoveLandBlock(uint cellOrBlockId)
+    /// <param name="cellOrBlockId">Any id <c>0xXXYY....</c> of the landblock.</param>
+    /// <param name="leftWorld">When given, receives every object that left the world because it stood in one of the block's
+    /// outdoor cells (in the world's order; children go with their parent and are not listed).</param>
+    /// <remarks>Objects of the world these cells serve that stand in one of the block's outdoor cells leave the world, as
+    /// retail's lost cell: <see cref="Objects.PhysicsObj.CellId"/> 0, no shadows, their last position kept, not simulated
+    /// until placed again (<see cref="Objects.PhysicsObj.EnterWorld"/>, <see cref="Objects.PhysicsObj.SetPosition"/> or a
+    /// server report). They remain the world's objects. Objects elsewhere whose shadows reached into the block keep only
+    /// their shadows in cells still loaded. Indoor cells are not part of a landblock here: objects in them stay. Call between
+    /// ticks.</remarks>
+    /// <exception cref="InvalidOperationException">Called from a callback inside the tick of the world these cells serve;
+    /// nothing changes.</exception>
+    public bool RemoveLandBlock(uint cellOrBlockId, System.Collections.Generic.ICollection<Objects.PhysicsObj>? leftWorld = null)
     {
+        ThrowIfOwnerTicking();
         if (!TryBlockIndex(cellOrBlockId, out int i) || _blocks[i] is null)
         {
             return false;
@@ -65,8 +85,20 @@ public sealed partial class TerrainWorld : ICellSource
 
         _blocks[i] = null;
         LandBlockCount--;
+        // non-retail: objects in the block leave the world (retail unloads blocks only away from objects it simulates)
+        OwnerWorld?.SendObjectsOutOfWorld(cellOrBlockId & 0xFFFF0000u, 0xFFFF0000u, leftWorld);
         return true;
     }
+
+    private void ThrowIfOwnerTicking()
+    {
+        if (OwnerWorld is { IsTicking: true })
+        {
+            throw new InvalidOperationException("Landblocks cannot change inside a tick of the world whose objects stand in them.");
+        }
+    }
+
+    private static uint BlockPrefix(int blockX, int blockY) => ((uint)blockX << 24) | ((uint)blockY << 16);
 
     /// <summary>The loaded landblock at column <paramref name="blockX"/>, row <paramref name="blockY"/>, or null (also
     /// for coordinates outside 0..254).</summary>

@@ -28,6 +28,7 @@ public sealed partial class PhysicsWorld
         {
             _freeHooks = h.PoolNext;
             h.PoolNext = null;
+            h.InPool = false;
             FreeHookCount--;
         }
 
@@ -35,9 +36,16 @@ public sealed partial class PhysicsWorld
         return h;
     }
 
-    /// <summary>Returns a finished hook to the pool.</summary>
+    /// <summary>Returns a finished hook to the pool; a hook the pool already holds is ignored (a second return would make the
+    /// free list point at itself and hand one hook to several objects).</summary>
     internal void ReturnFPHook(FPHook hook)
     {
+        if (hook.InPool)
+        {
+            return;
+        }
+
+        hook.InPool = true;
         hook.PoolNext = _freeHooks;
         _freeHooks = hook;
         FreeHookCount++;

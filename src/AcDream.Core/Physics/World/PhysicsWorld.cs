@@ -20,6 +20,8 @@ public sealed partial class PhysicsWorld
     private int _count;
     private PhysicsObj? _player;
     private readonly System.Collections.Generic.Dictionary<uint, PhysicsObj> _byId = new();
+    private bool _inUseTime;
+    private int _visitCursor;
 
     /// <summary>Creates a world whose clocks start at <paramref name="startTime"/> seconds.</summary>
     /// <param name="startTime">Initial client time, seconds.</param>
@@ -77,14 +79,27 @@ public sealed partial class PhysicsWorld
     private bool _objectMaintenanceActive = true;
 
     /// <summary>The collision sweep. <see cref="FreeSpaceSweep.Instance"/> by default.</summary>
+    /// <remarks>Replacing a <see cref="RetailSweep"/> takes the objects' shadows out of its cells and releases them (its
+    /// <see cref="Terrain.TerrainWorld"/> or <see cref="Cells.WorldCells"/>) for another world, unless the new sweep uses the same cells.</remarks>
     /// <exception cref="ArgumentNullException">The value is null.</exception>
-    /// <exception cref="ArgumentException">The seam's cells already serve another world (see <see cref="RetailSweep"/>).</exception>
+    /// <exception cref="ArgumentException">The seam's cells already serve another world (see <see cref="RetailSweep"/>);
+    /// nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">Set from a callback inside this world's tick; nothing changes.</exception>
     public CollisionSweep Sweep
     {
         get => _sweep;
         set
         {
             ArgumentNullException.ThrowIfNull(value);
+            ThrowIfInTick();
+            if (ReferenceEquals(value, _sweep))
+            {
+                return;
+            }
+
+            value.AttachTo(this);
+            _sweep.DetachFrom(this, value);
+            // The old seam may have released cells the new one shares (a WorldCells' terrain): claim them again.
             value.AttachTo(this);
             _sweep = value;
         }
@@ -183,6 +198,11 @@ public sealed partial class PhysicsWorld
         Array.Copy(_objects, at, _objects, at + 1, _count - at);
         _objects[at] = obj;
         _count++;
+        if (_inUseTime && at <= _visitCursor)
+        {
+            _visitCursor++; // created from a callback before the visit in progress: visited from the next tick on
+        }
+
         for (int k = at; k < _count; k++)
         {
             _objects[k].WorldIndex = k;
@@ -198,6 +218,11 @@ public sealed partial class PhysicsWorld
     }
 
     /// <summary>Removes <paramref name="obj"/> from the world (it is no longer ticked). Order of the others is kept.</summary>
+    /// <remarks>Safe from any callback inside a tick (hooks, the step observer, collision and player listeners), the removed
+    /// object's own included: its step ends at the callback, its shadows leave the cells and never return, its hooks are
+    /// dropped (pooled fades go back to the pool once), and every other object is still visited exactly once this tick. The
+    /// removed object keeps its last <see cref="PhysicsObj.Position"/> and <see cref="PhysicsObj.CellId"/> for the caller to
+    /// read; it cannot be added back.</remarks>
     /// <exception cref="ArgumentException">The object is not in this world.</exception>
     public void RemoveObject(PhysicsObj obj)
     {
@@ -216,6 +241,11 @@ public sealed partial class PhysicsWorld
         int i = obj.WorldIndex;
         Array.Copy(_objects, i + 1, _objects, i, _count - i - 1);
         _count--;
+        if (_inUseTime && i <= _visitCursor)
+        {
+            _visitCursor--; // the tick in progress goes on with the object that followed
+        }
+
         _objects[_count] = null!;
         for (int k = i; k < _count; k++)
         {
@@ -223,6 +253,7 @@ public sealed partial class PhysicsWorld
         }
 
         obj.WorldIndex = -1;
+        obj.RemovedFromWorld = true;
         if (obj.Id != 0 && _byId.TryGetValue(obj.Id, out PhysicsObj? found) && found == obj)
         {
             _byId.Remove(obj.Id);
@@ -238,8 +269,11 @@ public sealed partial class PhysicsWorld
 
     /// <summary>Sets the client clock without ticking (retail: the client loop advancing <c>Timer::cur_time</c>).</summary>
     /// <exception cref="ArgumentException"><paramref name="now"/> is NaN or infinite. The clock may go backwards (retail resyncs).</exception>
+    /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick (the clock the tick is
+    /// slicing would change under it); nothing changes.</exception>
     public void SetCurrentTime(double now)
     {
+        ThrowIfInTick();
         if (!double.IsFinite(now))
         {
             throw new ArgumentException("Time must be finite.", nameof(now));
@@ -251,6 +285,8 @@ public sealed partial class PhysicsWorld
     /// <summary>Sets the client clock to <paramref name="now"/> and runs <see cref="UseTime"/>.</summary>
     /// <returns>True when the objects were updated (at least MinQuantum had passed).</returns>
     /// <exception cref="ArgumentException"><paramref name="now"/> is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick (re-entrant tick); nothing
+    /// changes and the tick in progress goes on.</exception>
     public bool Tick(double now)
     {
         SetCurrentTime(now);
@@ -262,9 +298,11 @@ public sealed partial class PhysicsWorld
     /// last update, runs <see cref="PhysicsObj.UpdateObject"/> on every object in order and records the time.
     /// </summary>
     /// <returns>True when the objects were updated.</returns>
+    /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick; nothing changes.</exception>
     // retail: CPhysics::UseTime (acclient.c:311334)
     public bool UseTime()
     {
+        ThrowIfInTick();
         double quantum = CurrentTime - LastUpdate;
         if (quantum < 0.0)
         {
@@ -277,27 +315,48 @@ public sealed partial class PhysicsWorld
             return false;
         }
 
-        if (VisitEveryObject)
+        // non-retail: the re-entrancy guard (retail's tick is never called from inside itself)
+        _inUseTime = true;
+        try
         {
-            PhysicsObj? player = _player;
-            for (int i = 0; i < _count; i++)
+            if (VisitEveryObject)
             {
-                PhysicsObj obj = _objects[i];
-                obj.UpdateObject();
-                if (obj == player)
+                PhysicsObj? player = _player;
+                int visits = 0;
+                // The cursor follows removals and creations from callbacks (RemoveObject, CreateObject), so each object is
+                // visited once.
+                for (_visitCursor = 0; _visitCursor < _count; _visitCursor++)
                 {
-                    PlayerListener?.PlayerPhysicsUpdated(obj);
+                    PhysicsObj obj = _objects[_visitCursor];
+                    obj.UpdateObject();
+                    visits++;
+                    if (obj == player)
+                    {
+                        PlayerListener?.PlayerPhysicsUpdated(obj);
+                    }
                 }
-            }
 
-            LastTickVisitCount = _count;
+                LastTickVisitCount = visits;
+            }
+            else
+            {
+                LastTickVisitCount = Scene.Tick();
+            }
         }
-        else
+        finally
         {
-            LastTickVisitCount = Scene.Tick();
+            _inUseTime = false;
         }
 
         LastUpdate = CurrentTime;
         return true;
+    }
+
+    private void ThrowIfInTick()
+    {
+        if (_inUseTime)
+        {
+            throw new InvalidOperationException("The world is ticking: Tick, UseTime, SetCurrentTime and Sweep cannot be called or set from a callback inside its tick.");
+        }
     }
 }

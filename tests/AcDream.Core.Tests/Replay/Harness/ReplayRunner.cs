@@ -131,7 +131,7 @@ public static class ReplayRunner
                     c.SetVelocity(u.WorldVelocity);
                 }
 
-                if (c.HandleReceivedPosition(u.Position, (ushort)u.Sequence, 0, u.HasContact))
+                if (c.HandleReceivedPosition(u.Position, (ushort)u.Sequence, 0, u.HasContact) >= ReceivedPositionResult.Interpolating)
                 {
                     result.Applied++;
                     atLastReport = ManagerScene.GlobalOf(c.Position);

@@ -21,6 +21,26 @@ public abstract class CollisionSweep
     }
 
     /// <summary>
+    /// True when a placement of <paramref name="obj"/> at <paramref name="pos"/> would find a cell (its landblock, or its indoor
+    /// cell, is loaded); false when it would send the object to the lost cell. <see cref="PhysicsObj.EnterWorld"/> asks before
+    /// it changes anything. The base answers from the id alone (a valid world cell id, outdoor ids re-homed to the cell under the
+    /// origin), as <see cref="FreeSpaceSweep"/> places.
+    /// </summary>
+    internal virtual bool FindsCell(PhysicsObj obj, in Position pos)
+    {
+        Position p = pos;
+        return LandDefs.InboundValidCellId(p.ObjCellId) && ((p.ObjCellId & 0xFFFFu) >= 0x100u || p.TryAdjustToOutside());
+    }
+
+    /// <summary>
+    /// Called when <paramref name="world"/> replaces this seam by <paramref name="next"/>. A seam that keeps per-world state
+    /// takes the world's objects out of its cells and releases them for another world.
+    /// </summary>
+    internal virtual void DetachFrom(PhysicsWorld world, CollisionSweep next)
+    {
+    }
+
+    /// <summary>
     /// Sweeps <paramref name="obj"/> from <paramref name="oldPos"/> to <paramref name="newPos"/>. On success fills
     /// <paramref name="result"/> and returns true; on failure (blocked, or no transition available) returns false and
     /// the object keeps its origin.

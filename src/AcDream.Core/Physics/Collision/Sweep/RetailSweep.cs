@@ -64,6 +64,47 @@ public sealed class RetailSweep : CollisionSweep
         }
     }
 
+    /// <inheritdoc />
+    /// <remarks>Answers from <see cref="Cells"/>: the cell <c>AdjustPosition</c> would start the placement from.</remarks>
+    internal override bool FindsCell(PhysicsObj obj, in Position pos) => obj.FindsPlacementCell(this, pos);
+
+    /// <inheritdoc />
+    /// <remarks>The world's objects' shadows leave the cells, and the cells (a <see cref="TerrainWorld"/>, or a
+    /// <see cref="WorldCells"/> and its terrain) are released so that another world may take them. Nothing happens when
+    /// <paramref name="next"/> sweeps the same cells.</remarks>
+    internal override void DetachFrom(PhysicsWorld world, CollisionSweep next)
+    {
+        // non-retail: retail has one world; here the cells change hands between worlds
+        if (next is RetailSweep r && ReferenceEquals(r.Cells, Cells))
+        {
+            return;
+        }
+
+        for (int i = 0; i < world.ObjectCount; i++)
+        {
+            world.ObjectAt(i).RemoveShadowsFromCells();
+        }
+
+        switch (Cells)
+        {
+            case TerrainWorld t when t.OwnerWorld == world:
+                t.OwnerWorld = null;
+                break;
+            case WorldCells c:
+                if (c.OwnerWorld == world)
+                {
+                    c.OwnerWorld = null;
+                }
+
+                if (c.Terrain.OwnerWorld == world)
+                {
+                    c.Terrain.OwnerWorld = null;
+                }
+
+                break;
+        }
+    }
+
     /// <summary>The ten transitions (retail's static pool, per world here).</summary>
     internal TransitionPool Pool { get; }
 
