@@ -162,4 +162,18 @@ public class HookRemovesItsObjectTests
         Assert.Equal(2u, world.GetObject(0).Id);
         Assert.Equal(3u, world.GetObject(1).Id);
     }
+
+    [Fact]
+    public void FadeOnARemovedObject_TakesItsEndValue_AndRentsNoHook()
+    {
+        // A removed object is never ticked again: a pooled fade on it would never return to the pool (64 fades on removed
+        // objects would empty it). The fade takes its end value at once; the pool keeps all 64.
+        var world = new PhysicsWorld();
+        PhysicsObj obj = Create(world, 1);
+        world.RemoveObject(obj);
+        Assert.Equal(Capacity, world.FreeHookCount);
+        obj.SetTranslucency(0.75f, 2.0);
+        Assert.Equal(0.75f, obj.Translucency);
+        Assert.Equal(Capacity, world.FreeHookCount);
+    }
 }

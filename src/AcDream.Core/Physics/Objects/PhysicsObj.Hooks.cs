@@ -306,6 +306,14 @@ public sealed partial class PhysicsObj
             return;
         }
 
+        // non-retail: an object removed from its world is never ticked again, so a fade on it would hold a pooled hook for
+        // ever; it takes its end value at once instead.
+        if (RemovedFromWorld)
+        {
+            ProcessFPHook(type, end, userData);
+            return;
+        }
+
         FPHook hook = World.RentFPHook(type, World.PhysicsTime, delta, start, end, userData);
         AddHook(hook);
     }
