@@ -30,8 +30,9 @@ public partial struct Frame
     {
         float dx = p.X - Origin.X;
         float dy = p.Y - Origin.Y;
-        float dz = p.Z - Origin.Z;
-        double z = (double)dz * _m8 + (double)dx * _m6 + (double)dy * _m7;
+        double dzWide = (double)p.Z - Origin.Z; // the z row keeps the difference on the x87 stack (acclient.c:143733)
+        float dz = (float)dzWide;               // the x and y rows use its float spill
+        double z = dzWide * _m8 + (double)dx * _m6 + (double)dy * _m7;
         double y = (double)dz * _m5 + (double)dx * _m3 + (double)dy * _m4;
         double x = (double)dz * _m2 + (double)dx * _m0 + (double)dy * _m1;
         return new Vector3((float)x, (float)y, (float)z);

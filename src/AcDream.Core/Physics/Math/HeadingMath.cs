@@ -5,11 +5,14 @@ namespace AcDream.Core.Physics.Math;
 /// </summary>
 internal static class HeadingMath
 {
-    /// <summary>Degrees per radian as retail's literal (57.29577951308232).</summary>
+    /// <summary>Degrees per radian, retail's literal printed 57.29577951308232: the double nearest 180/π, bits
+    /// 0x404CA5DC1A63C1F8 (these 16 digits parse back to it).</summary>
     public const double RadToDeg = 57.29577951308232;
 
-    /// <summary>Radians per degree as retail's literal (0.0174532925199433).</summary>
-    public const double DegToRad = 0.0174532925199433;
+    /// <summary>Radians per degree, retail's literal printed 0.0174532925199433 (acclient.c:357667, 357691). The binary
+    /// holds the double nearest π/180, bits 0x3F91DF46A2529D39 (what a compiler emits for the source constant; its 16-digit
+    /// print is the one shown); parsing the printed digits would give 0x3F91DF46A2529D3A, one ulp high.</summary>
+    public const double DegToRad = 0.017453292519943295;
 
     /// <summary>
     /// Converts a mathematical angle <c>atan2(y, x)</c> (radians, anticlockwise from +X) to a compass heading in degrees
