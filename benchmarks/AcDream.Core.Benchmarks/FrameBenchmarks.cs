@@ -50,6 +50,19 @@ public class FrameBenchmarks
         return r;
     }
 
+    /// <summary>Frame::rotate (local axes lifted by the cached matrix, then grotate).</summary>
+    [Benchmark(OperationsPerInvoke = Ops)]
+    public Frame Rotate()
+    {
+        Frame r = _a;
+        for (int i = 0; i < Ops; i++)
+        {
+            r.Rotate(_w);
+        }
+
+        return r;
+    }
+
     /// <summary>Frame::localtoglobal then globaltolocal.</summary>
     [Benchmark(OperationsPerInvoke = Ops)]
     public Vector3 LocalToGlobalRoundTrip()
