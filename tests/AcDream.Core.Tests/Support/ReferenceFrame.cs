@@ -254,4 +254,21 @@ internal struct ReferenceFrame
                 }
             }
         }
+
+    /// <summary><c>SimplePartArray.Update</c> as it stood before its idle shortcut (CSequence::apply_physics with an empty
+    /// animation list), on this frame as the offset.</summary>
+    public void SequenceUpdate(float quantum, Vector3 sequenceVelocity, Vector3 sequenceOmega)
+    {
+        double s = System.Math.Abs((double)quantum);
+        if (quantum < 0f)
+        {
+            s = -s;
+        }
+
+        Vector3 v = sequenceVelocity;
+        Vector3 o = Origin;
+        Origin = new Vector3((float)(s * v.X + o.X), (float)(s * v.Y + o.Y), (float)(s * v.Z + o.Z));
+        Vector3 w = sequenceOmega;
+        Rotate(new Vector3((float)(s * w.X), (float)(s * w.Y), (float)(s * w.Z)));
+    }
 }

@@ -17,7 +17,7 @@ public sealed partial class PhysicsObj
     private AxisAngle _rotation;
 
     /// <summary>The rotation of <paramref name="w"/> (|w|² at least EPSILON²), from the one-entry cache when w repeats.</summary>
-    private ref readonly AxisAngle StepRotation(Vector3 w)
+    internal ref readonly AxisAngle StepRotation(Vector3 w)
     {
         int x = BitConverter.SingleToInt32Bits(w.X);
         int y = BitConverter.SingleToInt32Bits(w.Y);
@@ -40,7 +40,7 @@ public sealed partial class PhysicsObj
     /// </summary>
     /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged), as <see cref="SetFrame"/>.</exception>
     // retail: CPhysicsObj::set_frame (acclient.c:321327), from UpdateObjectInternal (acclient.c:322718)
-    private void StoreStepFrame(ref Frame frame)
+    internal void StoreStepFrame(ref Frame frame)
     {
         ThrowIfNotFinite(frame.Origin, nameof(frame));
         if (!frame.IsValid() && frame.IsValidExceptForHeading())
