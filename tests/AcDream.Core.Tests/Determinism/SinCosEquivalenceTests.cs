@@ -39,4 +39,28 @@ public class SinCosEquivalenceTests
             Assert.Equal(BitConverter.DoubleToInt64Bits(Math.Cos(x)), BitConverter.DoubleToInt64Bits(c));
         }
     }
+
+    [Fact]
+    public void Fmod360Shortcut_GivesTheBitsOfTheRemainder()
+    {
+        // HeadingMath.Fmod360 returns x or x - 360 on [0, 720) instead of calling fmod; both must agree with % everywhere.
+        var rng = new Random(1810);
+        for (int i = 0; i < 400_000; i++)
+        {
+            double x = (i % 4) switch
+            {
+                0 => 450.0 - (rng.NextDouble() * 2.0 - 1.0) * Math.PI * 57.29577951308232,
+                1 => rng.NextDouble() * 720.0,
+                2 => (rng.NextDouble() * 2.0 - 1.0) * 1e4,
+                _ => 360.0 + (rng.Next(5) - 2) * 1e-13,
+            };
+            Assert.Equal(BitConverter.DoubleToInt64Bits(x % 360.0), BitConverter.DoubleToInt64Bits(AcDream.Core.Physics.Math.HeadingMath.Fmod360(x)));
+        }
+
+        foreach (double x in new[] { 0.0, -0.0, 360.0, 720.0, Math.BitDecrement(720.0), Math.BitDecrement(360.0), double.NaN, double.PositiveInfinity, -1e-300 })
+        {
+            Assert.Equal(BitConverter.DoubleToInt64Bits(x % 360.0), BitConverter.DoubleToInt64Bits(AcDream.Core.Physics.Math.HeadingMath.Fmod360(x)));
+        }
+    }
 }
+

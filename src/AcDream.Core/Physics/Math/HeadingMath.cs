@@ -26,5 +26,20 @@ internal static class HeadingMath
     /// which makes the identity frame face north with heading 0 — the convention of the game data, of ACE's port and of this
     /// library. The choice is pinned by <c>FrameHeadingTests</c>.
     /// </remarks>
-    public static double CompassFromAtan2(double atan2Radians) => (450.0 - atan2Radians * RadToDeg) % 360.0;
+    public static double CompassFromAtan2(double atan2Radians) => Fmod360(450.0 - atan2Radians * RadToDeg);
+
+    /// <summary>
+    /// C's <c>fmod(x, 360)</c> with the library call skipped where the result is known exactly: for 0 ≤ x &lt; 360 it is x,
+    /// and for 360 ≤ x &lt; 720 it is x − 360, which double subtraction gives exactly (Sterbenz: x is within a factor of two
+    /// of 360). An atan2 angle always lands in that range (270 ≤ x ≤ 630); anything else takes <c>%</c>.
+    /// </summary>
+    internal static double Fmod360(double x)
+    {
+        if (x >= 0.0 && x < 720.0)
+        {
+            return x >= 360.0 ? x - 360.0 : x;
+        }
+
+        return x % 360.0;
+    }
 }
