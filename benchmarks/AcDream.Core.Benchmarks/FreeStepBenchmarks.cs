@@ -9,9 +9,9 @@ namespace AcDream.Core.Benchmarks;
 
 /// <summary>
 /// The free step of an object without shape (a part array with no collision spheres, so no sweep): falling under gravity
-/// and spinning, retail profile. <c>UpdateObjectFreeStep</c> is one object's update_object after 1/30 s (one step); <c>WorldTick1000NoShape</c> one world tick of
-/// 1,000 such objects (one step each). Every 64 steps the velocity is set back to 1 m/s east so the fall stays below
-/// the 50 m/s clamp. The means are per update_object and per world tick.
+/// and spinning, retail profile. <c>UpdateObjectFreeStep</c> is one object's update_object after 1/30 s (one step);
+/// <c>WorldTick1000NoShape</c> one world tick of 1,000 such objects (one step each). Every 64 steps the velocity is set back
+/// to 1 m/s east so the fall stays below the 50 m/s clamp. The means are per update_object and per world tick.
 /// </summary>
 [MemoryDiagnoser]
 public class FreeStepBenchmarks

@@ -1,4 +1,5 @@
 using System;
+using AcDream.Core.Physics.Math;
 using Xunit;
 
 namespace AcDream.Core.Tests.Determinism;
@@ -54,12 +55,13 @@ public class SinCosEquivalenceTests
                 2 => (rng.NextDouble() * 2.0 - 1.0) * 1e4,
                 _ => 360.0 + (rng.Next(5) - 2) * 1e-13,
             };
-            Assert.Equal(BitConverter.DoubleToInt64Bits(x % 360.0), BitConverter.DoubleToInt64Bits(AcDream.Core.Physics.Math.HeadingMath.Fmod360(x)));
+            Assert.Equal(BitConverter.DoubleToInt64Bits(x % 360.0), BitConverter.DoubleToInt64Bits(HeadingMath.Fmod360(x)));
         }
 
-        foreach (double x in new[] { 0.0, -0.0, 360.0, 720.0, Math.BitDecrement(720.0), Math.BitDecrement(360.0), double.NaN, double.PositiveInfinity, -1e-300 })
+        double[] edges = { 0.0, -0.0, 360.0, 720.0, Math.BitDecrement(720.0), Math.BitDecrement(360.0), double.NaN, double.PositiveInfinity, -1e-300 };
+        foreach (double x in edges)
         {
-            Assert.Equal(BitConverter.DoubleToInt64Bits(x % 360.0), BitConverter.DoubleToInt64Bits(AcDream.Core.Physics.Math.HeadingMath.Fmod360(x)));
+            Assert.Equal(BitConverter.DoubleToInt64Bits(x % 360.0), BitConverter.DoubleToInt64Bits(HeadingMath.Fmod360(x)));
         }
     }
 }

@@ -31,8 +31,8 @@ public class AngleConstantsTests
     public void RadToDeg_IsTheDoubleNearest180OverPi_0x404CA5DC1A63C1F8()
     {
         // Printed "57.29577951308232" (acclient.c:357409, 357667). 180/π = 57.29577951308232087680...; the nearest double is
-        // 0x404CA5DC1A63C1F8 = 57.29577951308232 (exactly 57.29577951308232286465; neighbours 57.29577951308231576 and 57.29577951308232997), and here the 16
-        // digits do parse back to it.
+        // 0x404CA5DC1A63C1F8 = 57.29577951308232286465 (neighbours 57.29577951308231576 and 57.29577951308232997), and
+        // here the 16 digits do parse back to it.
         Assert.Equal(0x404CA5DC1A63C1F8L, Bits(HeadingMath.RadToDeg));
         Assert.Equal(0x404CA5DC1A63C1F8L, Bits(57.29577951308232));
     }
