@@ -203,6 +203,31 @@ public class FrameTests
     }
 
     [Fact]
+    public void GlobalToLocal_ZRowKeepsTheZDifferenceInDouble()
+    {
+        // retail: Frame::globaltolocal (acclient.c:143717): "v6 = in->z - origin.z" stays on the x87 stack for the z row
+        // (acclient.c:143733, "v8 = v6 * m_fl2gv[8] + ..."), while the x and y rows use its float spill v7.
+        // A tilted frame (quaternion 0.9, 0.3, 0.2, 0.1 normalised) at (10, 20, 100.5), the point (11, 19, 0.3f):
+        //   dx = 1, dy = -1; dz = 0.3f - 100.5 = -100.19999998807907 in double (as float: -100.19999694824219).
+        //   The cached column Z is M6 = 0.44210529, M7 = -0.52631581, M8 = 0.72631574 (the floats Cache stores).
+        //   z = dz*M8 + dx*M6 + dy*M7 = -72.77683681575876 + 0.44210529 + 0.52631581 = -71.80841571418863
+        //     -> 0xC28F9DE9 (-71.80841827); with the float dz: -71.80841350630726 -> 0xC28F9DE8 (-71.80841064).
+        //   The midpoint of the two floats is -71.80841445922852.
+        var f = new Frame(new Vector3(10f, 20f, 100.5f), new Quaternion(0.3f, 0.2f, 0.1f, 0.9f));
+        var p = new Vector3(11f, 19f, 0.3f);
+        Vector3 local = f.GlobalToLocal(p);
+        double dz = (double)p.Z - f.Origin.Z;
+        double expected = dz * f.M8 + 1.0 * f.M6 + -1.0 * f.M7;
+        Assert.Equal(-71.80841571418863, expected, 12);
+        Assert.Equal(unchecked((int)0xC28F9DE9), BitConverter.SingleToInt32Bits(local.Z));
+
+        // The x and y rows use the float dz (-100.19999694824219) exactly as before.
+        float dzF = p.Z - f.Origin.Z;
+        Assert.Equal((float)((double)dzF * f.M2 + 1.0 * f.M0 + -1.0 * f.M1), local.X);
+        Assert.Equal((float)((double)dzF * f.M5 + 1.0 * f.M3 + -1.0 * f.M4), local.Y);
+    }
+
+    [Fact]
     public void CachedMatrix_StaysOrthonormal_AfterManyRotations()
     {
         Frame f = Frame.Identity;

@@ -107,7 +107,8 @@ public class ObjectTickConstantsTests
     [Fact]
     public void SleddingSteepCos_IsCosTenDegreesInDouble()
     {
-        // calc_friction compares against cos(0.1745329251994329) = cos(10 deg) = 0.98480775301220802, evaluated in double.
+        // calc_friction compares against cos(10 deg) = 0.98480775301220802, evaluated in double (the argument's bits are
+        // pinned in AngleConstantsTests).
         Assert.Equal(0.984807753012208, PhysicsObj.SleddingSteepCos, 15);
     }
 

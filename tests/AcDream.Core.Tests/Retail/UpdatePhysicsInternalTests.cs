@@ -87,6 +87,27 @@ public class UpdatePhysicsInternalTests
     }
 
     [Fact]
+    public void VelocityUpdate_RoundsQuantumTimesAzToFloatBeforeAddingIt()
+    {
+        // acclient.c:317773: "result.z = quantum * a.z" is a float store (result is an AC1Legacy::Vector3), then
+        // "v.z = result.z + v.z"; x and y keep quantum * a in double. Hand-worked with exact fractions:
+        //   quantum = 0x3D088889 = 8947849/2^28 = 0.033333335071802139, a.z = -9.8f = 0xC11CCCCD = -10276045/2^20,
+        //   v.z = 0xBEE7E086 = -7598147/2^24 = -0.45288485288619995.
+        //   quantum * a.z = -0.32666669006149... (exact in double), as float 0xBEA740DB = -10961115/2^25 = -0.32666668295860291.
+        //   0xBEA740DB + v.z = -0.77955153584480286, exactly halfway between 0xBF4790B0 (-0.77955150604248047) and
+        //   0xBF4790B1 (-0.77955156564712524): ties to even gives 0xBF4790B0.
+        //   Unrounded, -0.32666669006149 + v.z = -0.77955154294769 lies 7.1e-9 beyond the midpoint: 0xBF4790B1.
+        // |v|² = 0.205 > 0.0625 + EPSILON, so the integration branch runs without zeroing v (the object is airborne: no friction).
+        PhysicsObj obj = Airborne();
+        float quantum = BitConverter.Int32BitsToSingle(0x3D088889);
+        Assert.Equal(unchecked((int)0xC11CCCCD), BitConverter.SingleToInt32Bits(obj.Acceleration.Z));
+        obj._velocity = new Vector3(0f, 0f, BitConverter.Int32BitsToSingle(unchecked((int)0xBEE7E086)));
+        Frame f = Frame.Identity;
+        obj.UpdatePhysicsInternal(quantum, ref f);
+        Assert.Equal(unchecked((int)0xBF4790B0), BitConverter.SingleToInt32Bits(obj.Velocity.Z));
+    }
+
+    [Fact]
     public void SmallVelocity_BelowQuarterMetrePerSecond_IsZeroedButGravityStillMovesOrigin()
     {
         PhysicsObj obj = Airborne();

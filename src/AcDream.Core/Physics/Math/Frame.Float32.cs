@@ -61,7 +61,7 @@ public partial struct Frame
         SetRotateFloat32(nw, nx, ny, nz);
     }
 
-    /// <summary>Float32 variant of <see cref="GRotate"/>.</summary>
+    /// <summary>Float32 variant of <see cref="GRotate(Vector3)"/>.</summary>
     public void GRotateFloat32(Vector3 w)
     {
         float mag2 = w.X * w.X + w.Y * w.Y + w.Z * w.Z;

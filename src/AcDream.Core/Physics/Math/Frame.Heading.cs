@@ -36,7 +36,8 @@ public partial struct Frame
     {
         float dz = (float)(((double)_m8 + _m2) * 0.0 + _m5);
         double rad = degrees * HeadingMath.DegToRad;
-        var direction = new Vector3((float)System.Math.Sin(rad), (float)System.Math.Cos(rad), dz);
+        (double sin, double cos) = System.Math.SinCos(rad); // the same bits as Sin and Cos (SinCosEquivalenceTests)
+        var direction = new Vector3((float)sin, (float)cos, dz);
         SetVectorHeading(direction);
     }
 
@@ -57,9 +58,42 @@ public partial struct Frame
         // Divergence: retail passes n.z straight to asin; a normalised z one ulp past ±1 would give NaN there and set_rotate
         // would silently keep the old rotation. We clamp to [-1, 1] so such a vector still sets the heading.
         double sinPitch = System.Math.Clamp((double)n.Z, -1.0, 1.0);
-        float pitch = (float)(System.Math.Asin(sinPitch) * HeadingMath.RadToDeg * HeadingMath.DegToRad);
-        EulerSetRotate(pitch, 0f, yaw, 0);
+        float pitch = (float)(ExactAsin(sinPitch) * HeadingMath.RadToDeg * HeadingMath.DegToRad);
+        EulerSetRotateXyzNoRoll(pitch, yaw);
     }
+
+    /// <summary>
+    /// <see cref="EulerSetRotate"/> for order 0 with y = +0 (set_vector_heading's call): the same arithmetic with the order
+    /// decoded at compile time, cos(+0) = 1 and sin(+0) = +0 written out, and each sine and cosine of one angle from SinCos.
+    /// </summary>
+    private void EulerSetRotateXyzNoRoll(float x, float z)
+    {
+        double ti = x * 0.5;
+        const double tj = 0.0;
+        float th = (float)(z * 0.5);
+        (double sinTi, double cosTi) = IsPositiveZero(ti) ? (0.0, 1.0) : System.Math.SinCos(ti);
+        float ci = (float)cosTi;
+        const float cj = 1f;
+        (double sh, double cosTh) = System.Math.SinCos(th);
+        float ch = (float)cosTh;
+        float si = (float)sinTi;
+        const double sj = tj;
+        float cc = ch * ci;
+        float cs = (float)(ci * sh);
+        float sc = si * ch;
+        float ss = (float)(sh * si);
+        float ai = (float)((double)sc * cj - cs * sj);
+        float aj = (float)(cc * sj + (double)ss * cj);
+        float ak = (float)((double)cs * cj - sc * sj);
+        float w = (float)(ss * sj + (double)cc * cj);
+        SetRotate(w, ai, aj, ak);
+    }
+
+    // sin, cos and asin have exact values at +0 (C99 Annex F: sin(+0) = +0, cos(+0) = 1, asin(+0) = +0), written out so that
+    // a level frame (pitch 0) skips the library calls.
+    private static double ExactAsin(double x) => IsPositiveZero(x) ? 0.0 : System.Math.Asin(x);
+
+    private static bool IsPositiveZero(double x) => System.BitConverter.DoubleToInt64Bits(x) == 0L;
 
     /// <summary>
     /// Sets the rotation from Euler angles (radians) in the given Shoemake order code (retail uses order 0 = XYZ static):

@@ -20,13 +20,14 @@ public partial struct Frame
     }
 
     /// <summary>
-    /// <see cref="GRotate"/> without renormalising: the same rotation by the global vector <paramref name="w"/> (|w| radians),
+    /// <see cref="GRotate(Vector3)"/> without renormalising: the same rotation by the global vector <paramref name="w"/> (|w| radians),
     /// with the product stored unnormalised. Not retail.
     /// </summary>
     public void GRotateNoRenormalise(Vector3 w)
     {
-        if (GRotateProduct(w, out float nw, out float nx, out float ny, out float nz))
+        if (AxisAngle.TryCreate(w, out AxisAngle r))
         {
+            GRotateProduct(r, out float nw, out float nx, out float ny, out float nz);
             StoreUnnormalised(nw, nx, ny, nz);
         }
     }

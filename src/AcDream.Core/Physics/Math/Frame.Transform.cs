@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics.Math;
 
@@ -30,8 +31,9 @@ public partial struct Frame
     {
         float dx = p.X - Origin.X;
         float dy = p.Y - Origin.Y;
-        float dz = p.Z - Origin.Z;
-        double z = (double)dz * _m8 + (double)dx * _m6 + (double)dy * _m7;
+        double dzWide = (double)p.Z - Origin.Z; // the z row keeps the difference on the x87 stack (acclient.c:143733)
+        float dz = (float)dzWide;               // the x and y rows use its float spill
+        double z = dzWide * _m8 + (double)dx * _m6 + (double)dy * _m7;
         double y = (double)dz * _m5 + (double)dx * _m3 + (double)dy * _m4;
         double x = (double)dz * _m2 + (double)dx * _m0 + (double)dy * _m1;
         return new Vector3((float)x, (float)y, (float)z);
@@ -54,7 +56,7 @@ public partial struct Frame
 
     /// <summary>
     /// Rotates by an angular displacement given in LOCAL axes (radians): the vector is lifted to global axes with the
-    /// cached matrix and applied through <see cref="GRotate"/>.
+    /// cached matrix and applied through <see cref="GRotate(Vector3)"/>.
     /// </summary>
     // retail: Frame::rotate (acclient.c:143690)
     public void Rotate(Vector3 w)
@@ -73,36 +75,31 @@ public partial struct Frame
     // retail: Frame::grotate (acclient.c:357421)
     public void GRotate(Vector3 w)
     {
-        if (GRotateProduct(w, out float nw, out float nx, out float ny, out float nz))
+        if (AxisAngle.TryCreate(w, out AxisAngle r))
         {
-            SetRotate(nw, nx, ny, nz);
+            GRotate(r);
         }
     }
 
-    /// <summary>grotate's arithmetic: the axis-angle quaternion of <paramref name="w"/> times this quaternion (not normalised);
-    /// false when |w|² is below EPSILON² and nothing is to be done.</summary>
-    private readonly bool GRotateProduct(Vector3 w, out float nw, out float nx, out float ny, out float nz)
+    /// <summary>grotate's second half: pre-multiplies the axis-angle quaternion <paramref name="r"/> (already worked out
+    /// from the displacement) and renormalises.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal void GRotate(in AxisAngle r)
     {
-        double mag2 = (double)w.X * w.X + (double)w.Y * w.Y + (double)w.Z * w.Z;
-        if (mag2 < (double)PhysicsGlobals.Epsilon * PhysicsGlobals.Epsilon)
-        {
-            nw = nx = ny = nz = 0f;
-            return false;
-        }
+        GRotateProduct(r, out float nw, out float nx, out float ny, out float nz);
+        SetRotate(nw, nx, ny, nz);
+    }
 
-        double theta = System.Math.Sqrt(mag2);
-        float thetaInv = (float)(1.0 / theta);
-        double half = theta * 0.5;
-        double s = System.Math.Sin(half);
-        float c = (float)System.Math.Cos(half);
-        float f = (float)(s * w.X * thetaInv);
-        float g = (float)(thetaInv * s * w.Y);
-        double h = s * thetaInv * w.Z;
-        nz = (float)((double)f * _qy + (double)c * _qz - (double)g * _qx + h * _qw);
-        ny = (float)((double)c * _qy - (double)f * _qz + h * _qx + (double)g * _qw);
-        nx = (float)((double)c * _qx + (double)g * _qz + (double)f * _qw - h * _qy);
-        nw = (float)((double)c * _qw - (double)f * _qx - (double)g * _qy - h * _qz);
-        return true;
+    /// <summary>grotate's product: the axis-angle quaternion <paramref name="r"/> times this quaternion (not normalised).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private readonly void GRotateProduct(in AxisAngle r, out float nw, out float nx, out float ny, out float nz)
+    {
+        double f = r.F, g = r.G, c = r.C, h = r.H;
+        double qw = _qw, qx = _qx, qy = _qy, qz = _qz;
+        nz = (float)(f * qy + c * qz - g * qx + h * qw);
+        ny = (float)(c * qy - f * qz + h * qx + g * qw);
+        nx = (float)(c * qx + g * qz + f * qw - h * qy);
+        nw = (float)(c * qw - f * qx - g * qy - h * qz);
     }
 
     /// <summary>Linear interpolation of the origin between two frames: (1 - t) * from + t * to.</summary>

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics.Math;
 
@@ -32,15 +33,17 @@ public partial struct Frame : IEquatable<Frame>
     public Vector3 Origin;
 
     /// <summary>The identity frame: origin zero, quaternion (1, 0, 0, 0), identity matrix.</summary>
-    public static Frame Identity
+    public static Frame Identity => s_identity;
+
+    // Built once (quaternion (1, 0, 0, 0) and its cache); a readonly copy, never changed.
+    private static readonly Frame s_identity = CreateIdentity();
+
+    private static Frame CreateIdentity()
     {
-        get
-        {
-            Frame f = default;
-            f._qw = 1f;
-            f.Cache();
-            return f;
-        }
+        Frame f = default;
+        f._qw = 1f;
+        f.Cache();
+        return f;
     }
 
     /// <summary>
@@ -131,20 +134,24 @@ public partial struct Frame : IEquatable<Frame>
 
     /// <summary>Rebuilds the cached matrix from the quaternion (intermediates in double, as retail's x87 code).</summary>
     // retail: Frame::cache (acclient.c:356983)
-    public void Cache()
+    public void Cache() => CacheFrom(_qw, _qx, _qy, _qz);
+
+    // Frame::cache's arithmetic on a quaternion held in registers (set_rotate calls it before the fields are read back).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void CacheFrom(float qw, float qx, float qy, float qz)
     {
-        double b2 = (double)_qx + _qx;
-        double c2 = (double)_qy + _qy;
-        double d2 = (double)_qz + _qz;
-        double wb = _qw * b2;
-        double wc = _qw * c2;
-        double wd = _qw * d2;
-        double xb = _qx * b2;
-        double xc = _qx * c2;
-        double xd = _qx * d2;
-        double yc = _qy * c2;
-        double yd = _qy * d2;
-        double zd = _qz * d2;
+        double b2 = (double)qx + qx;
+        double c2 = (double)qy + qy;
+        double d2 = (double)qz + qz;
+        double wb = qw * b2;
+        double wc = qw * c2;
+        double wd = qw * d2;
+        double xb = qx * b2;
+        double xc = qx * c2;
+        double xd = qx * d2;
+        double yc = qy * c2;
+        double yd = qy * d2;
+        double zd = qz * d2;
         _m0 = (float)(1.0 - yc - zd);
         _m1 = (float)(xc + wd);
         _m2 = (float)(xd - wc);
@@ -161,18 +168,20 @@ public partial struct Frame : IEquatable<Frame>
     /// True when no component is NaN and the quaternion's squared norm is within 5 * EPSILON of 1.
     /// </summary>
     // retail: Frame::IsValid (acclient.c:357024)
-    public readonly bool IsValid()
-    {
-        bool ok = !(float.IsNaN(Origin.X) || float.IsNaN(Origin.Y) || float.IsNaN(Origin.Z)
-                    || float.IsNaN(_qw) || float.IsNaN(_qx) || float.IsNaN(_qy) || float.IsNaN(_qz));
-        float norm = _qz * _qz + _qy * _qy + _qx * _qx + _qw * _qw;
-        if (float.IsNaN(norm) || (double)PhysicsGlobals.Epsilon * 5.0 < System.Math.Abs(norm - 1.0))
-        {
-            return false;
-        }
+    public readonly bool IsValid() => IsValidWith(_qw, _qx, _qy, _qz);
 
-        return ok;
+    // Frame::IsValid for this origin and the quaternion (qw, qx, qy, qz). A NaN component makes the norm NaN, which fails
+    // the tolerance test, so retail's separate NaN tests of the quaternion are implied by it.
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private readonly bool IsValidWith(float qw, float qx, float qy, float qz)
+    {
+        float norm = qz * qz + qy * qy + qx * qx + qw * qw;
+        return System.Math.Abs(norm - 1.0) <= ValidNormTolerance
+               && !float.IsNaN(Origin.X) && !float.IsNaN(Origin.Y) && !float.IsNaN(Origin.Z);
     }
+
+    // IsValid's tolerance on |q|² - 1: 5 * EPSILON in double.
+    private const double ValidNormTolerance = (double)PhysicsGlobals.Epsilon * 5.0;
 
     /// <summary>
     /// Retail's test used by <c>set_frame</c> to recover a frame whose origin is good but whose quaternion is not:
@@ -195,23 +204,24 @@ public partial struct Frame : IEquatable<Frame>
     // retail: Frame::set_rotate (acclient.c:357062)
     public bool SetRotate(float qw, float qx, float qy, float qz)
     {
-        float oldW = _qw, oldX = _qx, oldY = _qy, oldZ = _qz;
+        // Retail stores the normalised quaternion, tests IsValid and restores the old one on failure; testing the new values
+        // before storing them is the same.
         double inv = 1.0 / System.Math.Sqrt((double)qw * qw + (double)qx * qx + (double)qy * qy + (double)qz * qz);
-        _qw = (float)(qw * inv);
-        _qx = (float)(qx * inv);
-        _qy = (float)(qy * inv);
-        _qz = (float)(inv * qz);
-        if (IsValid())
+        float w = (float)(qw * inv);
+        float x = (float)(qx * inv);
+        float y = (float)(qy * inv);
+        float z = (float)(inv * qz);
+        if (!IsValidWith(w, x, y, z))
         {
-            Cache();
-            return true;
+            return false;
         }
 
-        _qw = oldW;
-        _qx = oldX;
-        _qy = oldY;
-        _qz = oldZ;
-        return false;
+        _qw = w;
+        _qx = x;
+        _qy = y;
+        _qz = z;
+        CacheFrom(w, x, y, z);
+        return true;
     }
 
     /// <summary>Sets the rotation from a System.Numerics quaternion (W is retail's qw); see <see cref="SetRotate(float, float, float, float)"/>.</summary>
@@ -235,21 +245,26 @@ public partial struct Frame : IEquatable<Frame>
     // retail: Frame::combine (acclient.c:319448)
     public void Combine(in Frame f1, in Frame f2)
     {
+        // f1 or f2 may be this frame: everything is read before anything is written.
         CombineProduct(f1, f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz);
         Origin = origin;
         SetRotate(nw, nx, ny, nz);
     }
 
     /// <summary>combine's arithmetic: f2's origin lifted by f1, and the quaternion product f1.q * f2.q (not normalised).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static void CombineProduct(in Frame f1, in Frame f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz)
     {
-        double ox = (double)f1._m6 * f2.Origin.Z + (double)f1._m0 * f2.Origin.X + (double)f1._m3 * f2.Origin.Y + f1.Origin.X;
-        double oy = (double)f1._m7 * f2.Origin.Z + (double)f1._m1 * f2.Origin.X + (double)f1._m4 * f2.Origin.Y + f1.Origin.Y;
-        double oz = (double)f1._m8 * f2.Origin.Z + (double)f1._m2 * f2.Origin.X + (double)f1._m5 * f2.Origin.Y + f1.Origin.Z;
-        nz = (float)((double)f2._qy * f1._qx + (double)f2._qz * f1._qw - (double)f1._qy * f2._qx + (double)f1._qz * f2._qw);
-        ny = (float)((double)f2._qy * f1._qw - (double)f2._qz * f1._qx + (double)f1._qz * f2._qx + (double)f1._qy * f2._qw);
-        nx = (float)((double)f1._qw * f2._qx + (double)f2._qz * f1._qy + (double)f2._qw * f1._qx - (double)f2._qy * f1._qz);
-        nw = (float)((double)f1._qw * f2._qw - (double)f2._qx * f1._qx - (double)f2._qy * f1._qy - (double)f2._qz * f1._qz);
+        double px = f2.Origin.X, py = f2.Origin.Y, pz = f2.Origin.Z;
+        double ox = f1._m6 * pz + f1._m0 * px + f1._m3 * py + f1.Origin.X;
+        double oy = f1._m7 * pz + f1._m1 * px + f1._m4 * py + f1.Origin.Y;
+        double oz = f1._m8 * pz + f1._m2 * px + f1._m5 * py + f1.Origin.Z;
+        double aw = f1._qw, ax = f1._qx, ay = f1._qy, az = f1._qz;
+        double bw = f2._qw, bx = f2._qx, by = f2._qy, bz = f2._qz;
+        nz = (float)(by * ax + bz * aw - ay * bx + az * bw);
+        ny = (float)(by * aw - bz * ax + az * bx + ay * bw);
+        nx = (float)(aw * bx + bz * ay + bw * ax - by * az);
+        nw = (float)(aw * bw - bx * ax - by * ay - bz * az);
         origin = new Vector3((float)ox, (float)oy, (float)oz);
     }
 

@@ -5,11 +5,14 @@ namespace AcDream.Core.Physics.Math;
 /// </summary>
 internal static class HeadingMath
 {
-    /// <summary>Degrees per radian as retail's literal (57.29577951308232).</summary>
+    /// <summary>Degrees per radian, retail's literal printed 57.29577951308232: the double nearest 180/π, bits
+    /// 0x404CA5DC1A63C1F8 (these 16 digits parse back to it).</summary>
     public const double RadToDeg = 57.29577951308232;
 
-    /// <summary>Radians per degree as retail's literal (0.0174532925199433).</summary>
-    public const double DegToRad = 0.0174532925199433;
+    /// <summary>Radians per degree, retail's literal printed 0.0174532925199433 (acclient.c:357667, 357691). The binary
+    /// holds the double nearest π/180, bits 0x3F91DF46A2529D39 (what a compiler emits for the source constant; its 16-digit
+    /// print is the one shown); parsing the printed digits would give 0x3F91DF46A2529D3A, one ulp high.</summary>
+    public const double DegToRad = 0.017453292519943295;
 
     /// <summary>
     /// Converts a mathematical angle <c>atan2(y, x)</c> (radians, anticlockwise from +X) to a compass heading in degrees
@@ -23,5 +26,20 @@ internal static class HeadingMath
     /// which makes the identity frame face north with heading 0 — the convention of the game data, of ACE's port and of this
     /// library. The choice is pinned by <c>FrameHeadingTests</c>.
     /// </remarks>
-    public static double CompassFromAtan2(double atan2Radians) => (450.0 - atan2Radians * RadToDeg) % 360.0;
+    public static double CompassFromAtan2(double atan2Radians) => Fmod360(450.0 - atan2Radians * RadToDeg);
+
+    /// <summary>
+    /// C's <c>fmod(x, 360)</c> with the library call skipped where the result is known exactly: for 0 ≤ x &lt; 360 it is x,
+    /// and for 360 ≤ x &lt; 720 it is x − 360, which double subtraction gives exactly (Sterbenz: x is within a factor of two
+    /// of 360). An atan2 angle always lands in that range (270 ≤ x ≤ 630); anything else takes <c>%</c>.
+    /// </summary>
+    internal static double Fmod360(double x)
+    {
+        if (x >= 0.0 && x < 720.0)
+        {
+            return x >= 360.0 ? x - 360.0 : x;
+        }
+
+        return x % 360.0;
+    }
 }

@@ -70,7 +70,7 @@ public sealed partial class PhysicsObj
         }
         else
         {
-            frame.GRotate(w);
+            frame.GRotate(StepRotation(w));
         }
     }
 

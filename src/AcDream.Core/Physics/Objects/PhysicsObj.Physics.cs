@@ -7,8 +7,15 @@ namespace AcDream.Core.Physics.Objects;
 
 public sealed partial class PhysicsObj
 {
-    /// <summary>cos(10 degrees) as retail evaluates it in calc_friction: <c>cos(0.1745329251994329)</c>, a double.</summary>
-    internal static readonly double SleddingSteepCos = System.Math.Cos(0.1745329251994329);
+    /// <summary>
+    /// 10 degrees in radians, the argument of calc_friction's cosine (printed <c>cos(0.1745329251994329)</c>,
+    /// acclient.c:316090). Bits 0x3FC657184AE74487: the double nearest π/18, which a compiler emits for the source constant
+    /// and which prints with 16 digits as shown; parsing the printed digits would give 0x3FC657184AE74485, two ulps low.
+    /// </summary>
+    internal const double SleddingSteepAngle = 0.17453292519943295;
+
+    /// <summary>cos(10 degrees) as retail evaluates it in calc_friction, a double (bits 0x3FEF838B8C811C17).</summary>
+    internal static readonly double SleddingSteepCos = System.Math.Cos(SleddingSteepAngle);
 
     /// <summary>
     /// Integrates one step into <paramref name="frame"/>: the 50 m/s clamp, friction, the small-velocity stop, the origin
@@ -82,7 +89,7 @@ public sealed partial class PhysicsObj
         _velocity = new Vector3(
             (float)(q * acc.X + vel.X),
             (float)(q * acc.Y + vel.Y),
-            (float)(q * acc.Z + vel.Z));
+            (float)((double)(float)(q * acc.Z) + vel.Z)); // acclient.c:317773: q·a.z is spilled to a float first
         Vector3 w = _omega;
         // non-retail: fidelity switches (arithmetic, renormalisation); the retail profile runs frame.GRotate(...)
         RotateForProfile(ref frame, new Vector3((float)(q * w.X), (float)(q * w.Y), (float)(q * w.Z)));
@@ -170,7 +177,8 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>
-    /// Sets the velocity (clamped to 50 m/s; marks <see cref="JumpedThisFrame"/> when it changes) and activates a non-static
+    /// Sets the velocity (clamped to 50 m/s; stored and marking <see cref="JumpedThisFrame"/> only when some axis differs from
+    /// the current velocity by more than EPSILON) and activates a non-static
     /// object, restarting its clock if it was inactive.
     /// </summary>
     /// <remarks>An object without a part array is in no cell and never moves, whatever its velocity (retail); its
@@ -181,7 +189,8 @@ public sealed partial class PhysicsObj
     {
         Touch();
         ThrowIfNotFinite(velocity, nameof(velocity));
-        if (velocity != _velocity)
+        // retail: Vector3::operator!= (acclient.c:156312): some axis differs by more than EPSILON
+        if (DiffersByMoreThanEpsilon(velocity, _velocity))
         {
             Vector3 v = velocity;
             if ((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z > PhysicsGlobals.MaxVelocitySquared)
@@ -204,6 +213,14 @@ public sealed partial class PhysicsObj
             _transientState |= TransientState.Active;
         }
     }
+
+    /// <summary>True when some axis of <paramref name="a"/> and <paramref name="b"/> differs by more than EPSILON
+    /// (the difference in double, as the x87 computes it).</summary>
+    // retail: Vector3::operator!= (acclient.c:156312)
+    private static bool DiffersByMoreThanEpsilon(Vector3 a, Vector3 b) =>
+        System.Math.Abs((double)a.X - b.X) > PhysicsGlobals.Epsilon
+        || System.Math.Abs((double)a.Y - b.Y) > PhysicsGlobals.Epsilon
+        || System.Math.Abs((double)a.Z - b.Z) > PhysicsGlobals.Epsilon;
 
     /// <summary>Sets the velocity from local axes (rotated to world axes by the object's frame), then <see cref="SetVelocity"/>.</summary>
     /// <exception cref="System.ArgumentException">A component is NaN or infinite.</exception>

@@ -94,13 +94,13 @@ public sealed partial class PhysicsObj
                 return;
             }
 
-            IPartArray? parts = PartArray;
-            if (parts is not null && parts.NumSpheres != 0)
+            IPartArray? parts = _partArray;
+            if (parts is not null && (parts is SimplePartArray simple ? simple.NumSpheres : parts.NumSpheres) != 0)
             {
                 if (VectorMath.AreEqual(newPos.Frame.Origin, _position.Frame.Origin, PhysicsGlobals.Epsilon))
                 {
                     newPos.Frame.Origin = _position.Frame.Origin;
-                    SetFrame(newPos.Frame);
+                    StoreStepFrame(ref newPos.Frame);
                     CachedVelocity = Vector3.Zero;
                 }
                 else
@@ -128,7 +128,7 @@ public sealed partial class PhysicsObj
                     else
                     {
                         newPos.Frame.Origin = _position.Frame.Origin;
-                        SetFrame(newPos.Frame);
+                        StoreStepFrame(ref newPos.Frame);
                         CachedVelocity = Vector3.Zero;
                     }
                 }
@@ -142,7 +142,7 @@ public sealed partial class PhysicsObj
                 }
 
                 newPos.Frame.Origin = _position.Frame.Origin;
-                SetFrame(newPos.Frame);
+                StoreStepFrame(ref newPos.Frame);
                 CachedVelocity = Vector3.Zero;
             }
 
@@ -153,7 +153,7 @@ public sealed partial class PhysicsObj
                 DetectionManager?.CheckDetection();
                 TargetManager?.HandleTargetting();
                 MovementManager?.UseTime();
-                PartArray?.HandleMovement();
+                HandlePartArrayMovement();
             }
 
             // non-retail: the scene's declared effects (retail runs the position manager)
@@ -183,7 +183,7 @@ public sealed partial class PhysicsObj
             // non-retail: the scene's declared effects (retail runs the part array's root motion)
             if ((fx & SceneEffects.RootMotion) != 0)
             {
-                PartArray?.Update(quantum, ref offset);
+                UpdatePartArray(quantum, ref offset);
             }
 
             Vector3 o = offset.Origin;

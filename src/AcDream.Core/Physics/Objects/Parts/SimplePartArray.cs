@@ -191,6 +191,19 @@ public sealed partial class SimplePartArray : IPartArray
     // retail: CSequence::apply_physics (acclient.c:339859), reached from CSequence::update with an empty anim list
     public void Update(float quantum, ref Frame offsetFrame)
     {
+        Vector3 v = _motionTable is null ? _sequenceVelocity : _motionTable.Velocity;
+        Vector3 w = _motionTable is null ? _sequenceOmega : _motionTable.Omega;
+        if (IsStill(v, w) && quantum >= 0f && quantum <= float.MaxValue)
+        {
+            // An idle sequence (the usual case: no animation velocity): s·v is +0 on each axis (s = quantum is finite and not
+            // negative, v is +0), so each origin component becomes +0 + o, which is o except that -0 becomes +0; and rotate by
+            // a zero vector never changes the frame (|w|² = 0 is below EPSILON², or NaN, which set_rotate refuses). So only
+            // the zero sums remain.
+            Vector3 o0 = offsetFrame.Origin;
+            offsetFrame.Origin = new Vector3(o0.X + 0f, o0.Y + 0f, o0.Z + 0f);
+            return;
+        }
+
         // sign = quantum: |quantum|, negated only for a negative sign (never, here).
         double s = System.Math.Abs((double)quantum);
         if (quantum < 0f)
@@ -198,12 +211,15 @@ public sealed partial class SimplePartArray : IPartArray
             s = -s;
         }
 
-        Vector3 v = _motionTable is null ? _sequenceVelocity : _motionTable.Velocity;
         Vector3 o = offsetFrame.Origin;
         offsetFrame.Origin = new Vector3((float)(s * v.X + o.X), (float)(s * v.Y + o.Y), (float)(s * v.Z + o.Z));
-        Vector3 w = _motionTable is null ? _sequenceOmega : _motionTable.Omega;
         offsetFrame.Rotate(new Vector3((float)(s * w.X), (float)(s * w.Y), (float)(s * w.Z)));
     }
+
+    // The idle test of Update: velocity +0 on every axis (bits, as the sums above depend on the sign) and omega zero.
+    private static bool IsStill(Vector3 v, Vector3 w) =>
+        (BitConverter.SingleToInt32Bits(v.X) | BitConverter.SingleToInt32Bits(v.Y) | BitConverter.SingleToInt32Bits(v.Z)) == 0
+        && w == Vector3.Zero;
 
     /// <inheritdoc />
     /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged).</exception>
@@ -212,6 +228,9 @@ public sealed partial class SimplePartArray : IPartArray
         Finite(frame.Origin);
         _frame = frame;
     }
+
+    /// <summary><see cref="SetFrame"/> for a frame whose origin the caller has already checked finite (the object's tick).</summary>
+    internal void StoreCheckedFrame(in Frame frame) => _frame = frame;
 
     /// <inheritdoc />
     public void SetCellId(uint cellId) => CellId = cellId;

@@ -1,0 +1,57 @@
+using System.Numerics;
+using System.Runtime.CompilerServices;
+
+namespace AcDream.Core.Physics.Math;
+
+/// <summary>
+/// The first half of <c>Frame::grotate</c>: the rotation quaternion (c, f, g, h) = (cos θ/2, sin θ/2 · w/θ) of an angular
+/// displacement w (radians, global axes), with the float roundings retail stores. It depends on w alone, so an object
+/// whose displacement repeats (constant omega and step) can keep it and skip the square root, the division, the sine and
+/// the cosine; <see cref="Frame.GRotate(in AxisAngle)"/> applies it with the same bits as <see cref="Frame.GRotate(Vector3)"/>.
+/// </summary>
+internal readonly struct AxisAngle
+{
+    /// <summary>cos θ/2, rounded to float.</summary>
+    public readonly float C;
+
+    /// <summary>sin θ/2 · w.x/θ, rounded to float.</summary>
+    public readonly float F;
+
+    /// <summary>sin θ/2 · w.y/θ, rounded to float.</summary>
+    public readonly float G;
+
+    /// <summary>sin θ/2 · w.z/θ, kept in double (retail keeps it on the x87 stack).</summary>
+    public readonly double H;
+
+    private AxisAngle(float c, float f, float g, double h)
+    {
+        C = c;
+        F = f;
+        G = g;
+        H = h;
+    }
+
+    /// <summary>Works out the rotation of <paramref name="w"/>; false (nothing to do) when |w|² is below EPSILON².</summary>
+    // retail: Frame::grotate (acclient.c:357421), up to the quaternion product
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool TryCreate(Vector3 w, out AxisAngle r)
+    {
+        double mag2 = (double)w.X * w.X + (double)w.Y * w.Y + (double)w.Z * w.Z;
+        if (mag2 < (double)PhysicsGlobals.Epsilon * PhysicsGlobals.Epsilon)
+        {
+            r = default;
+            return false;
+        }
+
+        double theta = System.Math.Sqrt(mag2);
+        float thetaInv = (float)(1.0 / theta);
+        double half = theta * 0.5;
+        (double s, double cosHalf) = System.Math.SinCos(half); // the same bits as Sin and Cos (SinCosEquivalenceTests)
+        float c = (float)cosHalf;
+        float f = (float)(s * w.X * thetaInv);
+        float g = (float)(thetaInv * s * w.Y);
+        double h = s * thetaInv * w.Z;
+        r = new AxisAngle(c, f, g, h);
+        return true;
+    }
+}

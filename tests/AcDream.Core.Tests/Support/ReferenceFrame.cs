@@ -1,0 +1,274 @@
+using System.Numerics;
+using AcDream.Core.Physics.Math;
+
+namespace AcDream.Core.Tests.Support;
+
+/// <summary>
+/// The Frame arithmetic as it stood before the performance restructuring (combine, set_rotate, cache, IsValid, grotate, rotate,
+/// set_heading, set_vector_heading, euler_set_rotate), kept verbatim as a test-only reference: the randomised comparisons
+/// check that the restructured <see cref="Frame"/> gives the same bits.
+/// </summary>
+internal struct ReferenceFrame
+{
+    public float Qw, Qx, Qy, Qz;
+    public float M0, M1, M2, M3, M4, M5, M6, M7, M8;
+    public Vector3 Origin;
+
+    /// <summary>Copies every field of <paramref name="f"/>.</summary>
+    public static ReferenceFrame From(in Frame f) => new()
+    {
+        Qw = f.Qw, Qx = f.Qx, Qy = f.Qy, Qz = f.Qz,
+        M0 = f.M0, M1 = f.M1, M2 = f.M2, M3 = f.M3, M4 = f.M4, M5 = f.M5, M6 = f.M6, M7 = f.M7, M8 = f.M8,
+        Origin = f.Origin,
+    };
+
+    /// <summary>True when every field has the same bits as <paramref name="f"/>'s.</summary>
+    public readonly bool SameBits(in Frame f) =>
+        B(Qw) == B(f.Qw) && B(Qx) == B(f.Qx) && B(Qy) == B(f.Qy) && B(Qz) == B(f.Qz)
+        && B(M0) == B(f.M0) && B(M1) == B(f.M1) && B(M2) == B(f.M2) && B(M3) == B(f.M3) && B(M4) == B(f.M4)
+        && B(M5) == B(f.M5) && B(M6) == B(f.M6) && B(M7) == B(f.M7) && B(M8) == B(f.M8)
+        && B(Origin.X) == B(f.Origin.X) && B(Origin.Y) == B(f.Origin.Y) && B(Origin.Z) == B(f.Origin.Z);
+
+    private static int B(float x) => System.BitConverter.SingleToInt32Bits(x);
+
+    public void Cache()
+        {
+            double b2 = (double)Qx + Qx;
+            double c2 = (double)Qy + Qy;
+            double d2 = (double)Qz + Qz;
+            double wb = Qw * b2;
+            double wc = Qw * c2;
+            double wd = Qw * d2;
+            double xb = Qx * b2;
+            double xc = Qx * c2;
+            double xd = Qx * d2;
+            double yc = Qy * c2;
+            double yd = Qy * d2;
+            double zd = Qz * d2;
+            M0 = (float)(1.0 - yc - zd);
+            M1 = (float)(xc + wd);
+            M2 = (float)(xd - wc);
+            M3 = (float)(xc - wd);
+            double oneMinusXb = 1.0 - xb;
+            M4 = (float)(oneMinusXb - zd);
+            M5 = (float)(yd + wb);
+            M6 = (float)(xd + wc);
+            M7 = (float)(yd - wb);
+            M8 = (float)(oneMinusXb - yc);
+        }
+
+    public readonly bool IsValid()
+        {
+            bool ok = !(float.IsNaN(Origin.X) || float.IsNaN(Origin.Y) || float.IsNaN(Origin.Z)
+                        || float.IsNaN(Qw) || float.IsNaN(Qx) || float.IsNaN(Qy) || float.IsNaN(Qz));
+            float norm = Qz * Qz + Qy * Qy + Qx * Qx + Qw * Qw;
+            if (float.IsNaN(norm) || (double)PhysicsGlobals.Epsilon * 5.0 < System.Math.Abs(norm - 1.0))
+            {
+                return false;
+            }
+
+            return ok;
+        }
+
+    public bool SetRotate(float qw, float qx, float qy, float qz)
+        {
+            float oldW = Qw, oldX = Qx, oldY = Qy, oldZ = Qz;
+            double inv = 1.0 / System.Math.Sqrt((double)qw * qw + (double)qx * qx + (double)qy * qy + (double)qz * qz);
+            Qw = (float)(qw * inv);
+            Qx = (float)(qx * inv);
+            Qy = (float)(qy * inv);
+            Qz = (float)(inv * qz);
+            if (IsValid())
+            {
+                Cache();
+                return true;
+            }
+
+            Qw = oldW;
+            Qx = oldX;
+            Qy = oldY;
+            Qz = oldZ;
+            return false;
+        }
+
+    public void Combine(in ReferenceFrame f1, in ReferenceFrame f2)
+        {
+            CombineProduct(f1, f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz);
+            Origin = origin;
+            SetRotate(nw, nx, ny, nz);
+        }
+
+    private static void CombineProduct(in ReferenceFrame f1, in ReferenceFrame f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz)
+        {
+            double ox = (double)f1.M6 * f2.Origin.Z + (double)f1.M0 * f2.Origin.X + (double)f1.M3 * f2.Origin.Y + f1.Origin.X;
+            double oy = (double)f1.M7 * f2.Origin.Z + (double)f1.M1 * f2.Origin.X + (double)f1.M4 * f2.Origin.Y + f1.Origin.Y;
+            double oz = (double)f1.M8 * f2.Origin.Z + (double)f1.M2 * f2.Origin.X + (double)f1.M5 * f2.Origin.Y + f1.Origin.Z;
+            nz = (float)((double)f2.Qy * f1.Qx + (double)f2.Qz * f1.Qw - (double)f1.Qy * f2.Qx + (double)f1.Qz * f2.Qw);
+            ny = (float)((double)f2.Qy * f1.Qw - (double)f2.Qz * f1.Qx + (double)f1.Qz * f2.Qx + (double)f1.Qy * f2.Qw);
+            nx = (float)((double)f1.Qw * f2.Qx + (double)f2.Qz * f1.Qy + (double)f2.Qw * f1.Qx - (double)f2.Qy * f1.Qz);
+            nw = (float)((double)f1.Qw * f2.Qw - (double)f2.Qx * f1.Qx - (double)f2.Qy * f1.Qy - (double)f2.Qz * f1.Qz);
+            origin = new Vector3((float)ox, (float)oy, (float)oz);
+        }
+
+    public void Rotate(Vector3 w)
+        {
+            float gx = (float)((double)M6 * w.Z + (double)M0 * w.X + (double)M3 * w.Y);
+            float gy = (float)((double)M7 * w.Z + (double)M1 * w.X + (double)M4 * w.Y);
+            float gz = (float)((double)M8 * w.Z + (double)M2 * w.X + (double)M5 * w.Y);
+            GRotate(new Vector3(gx, gy, gz));
+        }
+
+    public void GRotate(Vector3 w)
+        {
+            if (GRotateProduct(w, out float nw, out float nx, out float ny, out float nz))
+            {
+                SetRotate(nw, nx, ny, nz);
+            }
+        }
+
+    private readonly bool GRotateProduct(Vector3 w, out float nw, out float nx, out float ny, out float nz)
+        {
+            double mag2 = (double)w.X * w.X + (double)w.Y * w.Y + (double)w.Z * w.Z;
+            if (mag2 < (double)PhysicsGlobals.Epsilon * PhysicsGlobals.Epsilon)
+            {
+                nw = nx = ny = nz = 0f;
+                return false;
+            }
+
+            double theta = System.Math.Sqrt(mag2);
+            float thetaInv = (float)(1.0 / theta);
+            double half = theta * 0.5;
+            double s = System.Math.Sin(half);
+            float c = (float)System.Math.Cos(half);
+            float f = (float)(s * w.X * thetaInv);
+            float g = (float)(thetaInv * s * w.Y);
+            double h = s * thetaInv * w.Z;
+            nz = (float)((double)f * Qy + (double)c * Qz - (double)g * Qx + h * Qw);
+            ny = (float)((double)c * Qy - (double)f * Qz + h * Qx + (double)g * Qw);
+            nx = (float)((double)c * Qx + (double)g * Qz + (double)f * Qw - h * Qy);
+            nw = (float)((double)c * Qw - (double)f * Qx - (double)g * Qy - h * Qz);
+            return true;
+        }
+
+    public void SetHeading(float degrees)
+        {
+            float dz = (float)(((double)M8 + M2) * 0.0 + M5);
+            double rad = degrees * HeadingMath.DegToRad;
+            var direction = new Vector3((float)System.Math.Sin(rad), (float)System.Math.Cos(rad), dz);
+            SetVectorHeading(direction);
+        }
+
+    public void SetVectorHeading(Vector3 heading)
+        {
+            Vector3 n = heading;
+            if (VectorMath.NormalizeCheckSmall(ref n))
+            {
+                return;
+            }
+
+            float yaw = (float)(-HeadingMath.CompassFromAtan2(System.Math.Atan2(n.Y, n.X)) * HeadingMath.DegToRad);
+            // Divergence: retail passes n.z straight to asin; a normalised z one ulp past ±1 would give NaN there and set_rotate
+            // would silently keep the old rotation. We clamp to [-1, 1] so such a vector still sets the heading.
+            double sinPitch = System.Math.Clamp((double)n.Z, -1.0, 1.0);
+            float pitch = (float)(System.Math.Asin(sinPitch) * HeadingMath.RadToDeg * HeadingMath.DegToRad);
+            EulerSetRotate(pitch, 0f, yaw, 0);
+        }
+
+    public void EulerSetRotate(float x, float y, float z, int order)
+        {
+            // Shoemake's order decoding: EulSafe = {0,1,2,0}, EulNext = {1,2,0,1}.
+            int f = order & 1;
+            int s = (order >> 1) & 1;
+            int n = (order >> 2) & 1;
+            int i = (order >> 3 & 3) switch { 0 => 0, 1 => 1, 2 => 2, _ => 0 };
+            int j = Next(i + n);
+            int k = Next(i + 1 - n);
+
+            double zv;
+            if (f == 1)
+            {
+                zv = x;
+                x = z;
+            }
+            else
+            {
+                zv = z;
+            }
+
+            if (n == 1)
+            {
+                y = -y;
+            }
+
+            double ti = x * 0.5;
+            double tj = y * 0.5;
+            float th = (float)(zv * 0.5);
+            float ci = (float)System.Math.Cos(ti);
+            float cj = (float)System.Math.Cos(tj);
+            float ch = (float)System.Math.Cos(th);
+            float si = (float)System.Math.Sin(ti);
+            double sj = System.Math.Sin(tj);
+            double sh = System.Math.Sin(th);
+            float cc = ch * ci;
+            float cs = (float)(ci * sh);
+            float sc = si * ch;
+            float ss = (float)(sh * si);
+
+            float a0 = 0f, a1 = 0f, a2 = 0f;
+            float w;
+            float ai, aj, ak;
+            if (s == 1)
+            {
+                ai = (float)(((double)sc + cs) * cj);
+                aj = (float)(((double)ss + cc) * sj);
+                ak = (float)(((double)cs - sc) * sj);
+                w = (float)(((double)cc - ss) * cj);
+            }
+            else
+            {
+                ai = (float)((double)sc * cj - cs * sj);
+                aj = (float)(cc * sj + (double)ss * cj);
+                ak = (float)((double)cs * cj - sc * sj);
+                w = (float)(ss * sj + (double)cc * cj);
+            }
+
+            if (n == 1)
+            {
+                aj = -aj;
+            }
+
+            Set(ref a0, ref a1, ref a2, i, ai);
+            Set(ref a0, ref a1, ref a2, j, aj);
+            Set(ref a0, ref a1, ref a2, k, ak);
+            SetRotate(w, a0, a1, a2);
+
+            static int Next(int idx) => idx switch { 0 => 1, 1 => 2, 2 => 0, _ => 1 };
+
+            static void Set(ref float v0, ref float v1, ref float v2, int index, float value)
+            {
+                switch (index)
+                {
+                    case 0: v0 = value; break;
+                    case 1: v1 = value; break;
+                    default: v2 = value; break;
+                }
+            }
+        }
+
+    /// <summary><c>SimplePartArray.Update</c> as it stood before its idle shortcut (CSequence::apply_physics with an empty
+    /// animation list), on this frame as the offset.</summary>
+    public void SequenceUpdate(float quantum, Vector3 sequenceVelocity, Vector3 sequenceOmega)
+    {
+        double s = System.Math.Abs((double)quantum);
+        if (quantum < 0f)
+        {
+            s = -s;
+        }
+
+        Vector3 v = sequenceVelocity;
+        Vector3 o = Origin;
+        Origin = new Vector3((float)(s * v.X + o.X), (float)(s * v.Y + o.Y), (float)(s * v.Z + o.Z));
+        Vector3 w = sequenceOmega;
+        Rotate(new Vector3((float)(s * w.X), (float)(s * w.Y), (float)(s * w.Z)));
+    }
+}
