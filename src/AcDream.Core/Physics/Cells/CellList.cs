@@ -107,6 +107,17 @@ internal static class CellList
 
         cellArray.AddedOutside = true;
         int n = spheres.Length <= SpherePath.MaxSpheres ? spheres.Length : SpherePath.MaxSpheres;
+        if (!cellArray.ReferencePaths && TryInteriorCells(p.ObjCellId, spheres[..n], out uint id0, out uint id1))
+        {
+            cellArray.AddCell(id0, cells.GetVisible(id0));
+            if (id1 != 0)
+            {
+                cellArray.AddCell(id1, cells.GetVisible(id1));
+            }
+
+            return;
+        }
+
         Span<Vector3> centers = stackalloc Vector3[SpherePath.MaxSpheres];
         Span<float> radii = stackalloc float[SpherePath.MaxSpheres];
         for (int i = 0; i < n; i++)
@@ -121,5 +132,67 @@ internal static class CellList
         {
             cellArray.AddCell(ids[i], cells.GetVisible(ids[i]));
         }
+    }
+
+    /// <summary>
+    /// The common case of <see cref="AddAllOutsideCells"/> computed directly: every sphere centre lies inside
+    /// <paramref name="cellId"/>'s landblock (x and y in [EPSILON, 192)) and at least its radius from each edge of the
+    /// outdoor cell that holds it, so that each sphere adds its own cell and no neighbour. Gives the ids
+    /// <see cref="LandCell.AddAllOutsideCells"/> would give, in its order (<paramref name="id1"/> = 0 when one cell), with
+    /// the same arithmetic: within the landblock <c>adjust_to_outside</c> leaves the centre as it is (no snap, no wrap), so
+    /// the cell is the landblock's cell at floor(x / 24), floor(y / 24) and the edge tests compare the same floats. False
+    /// (nothing computed) for anything else: an indoor or invalid id, no sphere, a centre outside the landblock or near a
+    /// cell edge, a NaN or a bad radius (the general path then handles or refuses it).
+    /// </summary>
+    // non-retail: a shortcut of CLandCell::add_all_outside_cells (acclient.c:355345) for spheres inside one landblock's
+    // cells; the same cells in the same order (shown against the general path by ReferencePathsEquivalenceTests)
+    internal static bool TryInteriorCells(uint cellId, ReadOnlySpan<Sphere> spheres, out uint id0, out uint id1)
+    {
+        id0 = 0;
+        id1 = 0;
+        uint c = cellId & 0xFFFF;
+        if (spheres.Length == 0 || c < 1 || c > 0x40 || !LandDefs.BlockIdToLCoord(cellId, out int bx, out int by))
+        {
+            return false;
+        }
+
+        for (int i = 0; i < spheres.Length; i++)
+        {
+            Vector3 center = spheres[i].Center;
+            float radius = spheres[i].Radius;
+            if (!(center.X >= PhysicsGlobals.Epsilon && center.X < LandDefs.BlockLength
+                  && center.Y >= PhysicsGlobals.Epsilon && center.Y < LandDefs.BlockLength)
+                || !float.IsFinite(center.Z) || !(radius >= 0f) || float.IsInfinity(radius))
+            {
+                return false;
+            }
+
+            int xc = unchecked((int)(long)System.Math.Floor(center.X / 24.0));
+            int yc = unchecked((int)(long)System.Math.Floor(center.Y / 24.0));
+            float ptX = (float)(center.X - xc * 24.0);
+            float ptY = (float)(center.Y - yc * 24.0);
+            float maxRad = (float)(24.0 - radius);
+            if (ptX > maxRad || ptX < radius || ptY > maxRad || ptY < radius)
+            {
+                return false;
+            }
+
+            uint id = LandDefs.LCoordToGid(bx + xc, by + yc);
+            if (id == 0)
+            {
+                return false;
+            }
+
+            if (id0 == 0)
+            {
+                id0 = id;
+            }
+            else if (id != id0)
+            {
+                id1 = id;
+            }
+        }
+
+        return true;
     }
 }

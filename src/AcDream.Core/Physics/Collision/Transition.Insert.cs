@@ -306,7 +306,7 @@ internal sealed partial class Transition
             path.CheckPos = path.CurrPos;
             path.CheckCell = path.CurrCell;
             path.CellArrayValid = false;
-            path.CacheGlobalSphere();
+            path.CacheGlobalSphereFromCurrCenter();
         }
         else if (ts > TransitionState.Ok && ts <= TransitionState.Slid)
         {

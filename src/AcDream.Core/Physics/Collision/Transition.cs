@@ -79,10 +79,19 @@ internal sealed partial class Transition
 
     /// <summary>
     /// Run the sweep the plain retail way, without the exact shortcuts of the port (obstacles out of reach skipped, the
-    /// cell array kept when it cannot change). Off by default; the tests turn it on in one of two worlds to show that
+    /// outdoor cells of spheres inside one landblock's cells found directly, the check spheres taken from the current
+    /// centres when they are equal). Off by default; the tests turn it on in one of two worlds to show that
     /// both give the same bits.
     /// </summary>
-    internal bool ReferencePaths { get; set; }
+    internal bool ReferencePaths
+    {
+        get => CellArray.ReferencePaths;
+        set
+        {
+            CellArray.ReferencePaths = value;
+            SpherePath.ReferencePaths = value;
+        }
+    }
 
     /// <summary>Retail: <c>new_cell_ptr</c> (declared; unused by the outdoor sweep).</summary>
     public ObjCell? NewCellPtr { get; set; }
