@@ -118,6 +118,14 @@ internal static class CellList
             return;
         }
 
+        AddAllOutsideCellsGeneral(cells, p, spheres[..n], cellArray);
+    }
+
+    // The general path of AddAllOutsideCells (kept apart so that the shortcut does not pay for its stack buffers).
+    // retail: CLandCell::add_all_outside_cells (acclient.c:355345)
+    private static void AddAllOutsideCellsGeneral(ICellSource cells, in Position p, ReadOnlySpan<Sphere> spheres, CellArray cellArray)
+    {
+        int n = spheres.Length;
         Span<Vector3> centers = stackalloc Vector3[SpherePath.MaxSpheres];
         Span<float> radii = stackalloc float[SpherePath.MaxSpheres];
         for (int i = 0; i < n; i++)

@@ -128,35 +128,28 @@ public sealed partial class PhysicsObj
 
     /// <summary>
     /// True when this object, as an obstacle where it stands, cannot reach the check spheres boxed by
-    /// <paramref name="reach"/>: it has no physics BSP, the built-in part array without cylinder spheres, and each of its
-    /// spheres (placed within scale · (|c.x| + |c.y| + |c.z| + r) of its origin whatever its orientation) lies outside the
-    /// box. <see cref="FindObjCollisions"/> then answers OK without touching anything but the obstruction flag; the cell's
-    /// object loop calls <see cref="SkipOutOfReach"/> instead.
+    /// <paramref name="reach"/>: it has no physics BSP, the built-in part array without cylinder spheres, and its spheres
+    /// (all within |scale| · <see cref="SimplePartArray.ObstacleReach"/> of its origin, whatever its orientation) lie
+    /// outside the box. <see cref="FindObjCollisions"/> then answers OK without touching anything but the obstruction
+    /// flag; the cell's object loop calls <see cref="SkipOutOfReach"/> instead.
     /// </summary>
     // non-retail: the exact early-out of ObjectReach (retail tests every sphere)
     internal bool IsOutOfReach(in ObjectReach reach)
     {
-        if ((_state & PhysicsState.HasPhysicsBsp) != 0 || PartArray is not SimplePartArray parts || parts.CylSpheres.Length != 0)
+        if ((_state & PhysicsState.HasPhysicsBsp) != 0 || _partArray is not SimplePartArray parts)
+        {
+            return false;
+        }
+
+        float bound = parts.ObstacleReach;
+        if (!(bound >= 0f))
         {
             return false;
         }
 
         Vector3 b = LandDefs.GetBlockOffset(reach.CellId, _position.ObjCellId);
         Vector3 o = _position.Frame.Origin;
-        double x = (double)b.X + o.X, y = (double)b.Y + o.Y, z = (double)b.Z + o.Z;
-        double scale = System.Math.Abs((double)Scale);
-        ReadOnlySpan<Sphere> spheres = parts.Spheres;
-        for (int i = 0; i < spheres.Length; i++)
-        {
-            Vector3 c = spheres[i].Center;
-            double r = scale * ((double)System.Math.Abs(c.X) + System.Math.Abs(c.Y) + System.Math.Abs(c.Z) + System.Math.Abs(spheres[i].Radius));
-            if (!reach.Excludes(x, y, z, r))
-            {
-                return false;
-            }
-        }
-
-        return true;
+        return reach.Excludes((double)b.X + o.X, (double)b.Y + o.Y, (double)b.Z + o.Z, System.Math.Abs((double)Scale) * bound);
     }
 
     /// <summary>
