@@ -92,7 +92,7 @@ public class SweepShortcutIdentityTests
             var pos = new Position(0xA9B40001, new Frame(origin, q));
             path.InitPath(null, true, pos, pos);
             path.CheckPos = path.CurrPos;
-            path.CacheGlobalSphereFromCurrCenter();
+            path.CacheGlobalSphereFromCurrCenter(path.CheckPos.Frame);
             Sphere s0 = path.GlobalSphere[0], s1 = path.GlobalSphere[1];
             Vector3 low = path.GlobalLowPoint;
             path.CacheGlobalSphere();

@@ -9,9 +9,16 @@ internal sealed partial class SpherePath
 {
     /// <summary>Places the local spheres at <see cref="CurrPos"/> into <see cref="GlobalCurrCenter"/>.</summary>
     // retail: SPHEREPATH::cache_global_curr_center (acclient.c:313696)
-    public void CacheGlobalCurrCenter()
+    public void CacheGlobalCurrCenter() => CacheGlobalCurrCenter(CurrPos.Frame);
+
+    /// <summary>
+    /// <see cref="CacheGlobalCurrCenter()"/> from <paramref name="f"/>, a frame with the bits of
+    /// <see cref="CurrPos"/>'s (the one it was just copied from: reading the source of a fresh copy instead of the copy
+    /// avoids waiting for the copy's stores).
+    /// </summary>
+    // retail: SPHEREPATH::cache_global_curr_center (acclient.c:313696)
+    public void CacheGlobalCurrCenter(in Frame f)
     {
-        ref readonly Frame f = ref CurrPos.Frame;
         for (int i = 0; i < NumSphere; i++)
         {
             Vector3 c = LocalSphere[i].Center;
@@ -54,9 +61,10 @@ internal sealed partial class SpherePath
     /// the zeros. The low point is computed as always.
     /// </summary>
     // non-retail: SPHEREPATH::cache_global_sphere (acclient.c:313747) reusing cache_global_curr_center's equal result
-    public void CacheGlobalSphereFromCurrCenter()
+    /// <param name="f">A frame with the bits of <see cref="CheckPos"/>'s (CheckPos's own, or the one it was just copied
+    /// from).</param>
+    public void CacheGlobalSphereFromCurrCenter(in Frame f)
     {
-        ref readonly Frame f = ref CheckPos.Frame;
         if (!ReferencePaths)
         {
             for (int i = 0; i < NumSphere; i++)

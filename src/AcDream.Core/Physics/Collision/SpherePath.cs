@@ -229,7 +229,7 @@ internal sealed partial class SpherePath
         EndPos = endPos;
         CurrPos = hasBeginPos ? beginPos : endPos;
         CurrCell = beginCell;
-        CacheGlobalCurrCenter();
+        CacheGlobalCurrCenter(hasBeginPos ? beginPos.Frame : endPos.Frame);
         InsertType = hasBeginPos ? InsertType.Transition : InsertType.Placement;
     }
 

@@ -210,7 +210,7 @@ internal sealed partial class Transition
         else
         {
             // The current centres were cached from this frame by init_path.
-            path.CacheGlobalSphereFromCurrCenter();
+            path.CacheGlobalSphereFromCurrCenter(path.CurrPos.Frame);
         }
 
         if (numSteps == 0)
