@@ -60,9 +60,9 @@ internal sealed partial class SpherePath
     /// local z axis, or a frame that only turns about z) both give ((M8·c.z + 0) + 0) + origin.z, whatever the signs of
     /// the zeros. The low point is computed as always.
     /// </summary>
-    // non-retail: SPHEREPATH::cache_global_sphere (acclient.c:313747) reusing cache_global_curr_center's equal result
     /// <param name="f">A frame with the bits of <see cref="CheckPos"/>'s (CheckPos's own, or the one it was just copied
     /// from).</param>
+    // non-retail: SPHEREPATH::cache_global_sphere (acclient.c:313747) reusing cache_global_curr_center's equal result
     public void CacheGlobalSphereFromCurrCenter(in Frame f)
     {
         if (!ReferencePaths)
