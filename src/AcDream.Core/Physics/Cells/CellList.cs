@@ -175,8 +175,8 @@ internal static class CellList
                 return false;
             }
 
-            int xc = unchecked((int)(long)System.Math.Floor(center.X / 24.0));
-            int yc = unchecked((int)(long)System.Math.Floor(center.Y / 24.0));
+            int xc = CellIndex(center.X);
+            int yc = CellIndex(center.Y);
             float ptX = (float)(center.X - xc * 24.0);
             float ptY = (float)(center.Y - yc * 24.0);
             float maxRad = (float)(24.0 - radius);
@@ -202,5 +202,23 @@ internal static class CellList
         }
 
         return true;
+    }
+
+    // floor(v / 24.0) for a float v in [0, 192) without the division: the k with 24k <= v < 24(k + 1). The same value,
+    // since for a float v the double quotient v / 24.0 rounds to k or above exactly when v >= 24k (24k is exact, and a float
+    // below it falls short of it by far more than the quotient's rounding).
+    private static int CellIndex(float v)
+    {
+        int k = (int)(v * (1f / 24f));
+        if (k * 24f > v)
+        {
+            k--;
+        }
+        else if ((k + 1) * 24f <= v)
+        {
+            k++;
+        }
+
+        return k;
     }
 }
