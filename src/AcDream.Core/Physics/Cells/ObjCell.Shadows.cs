@@ -104,7 +104,12 @@ public abstract partial class ObjCell
 
                     if (obj.IsOutOfReach(reach))
                     {
-                        obj.SkipOutOfReach(transition);
+                        // Skipping can only clear the obstruction flag: nothing to do when it is clear.
+                        if (transition.SpherePath.ObstructionEthereal)
+                        {
+                            obj.SkipOutOfReach(transition);
+                        }
+
                         continue;
                     }
 

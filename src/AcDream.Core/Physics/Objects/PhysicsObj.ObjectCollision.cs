@@ -134,6 +134,7 @@ public sealed partial class PhysicsObj
     /// flag; the cell's object loop calls <see cref="SkipOutOfReach"/> instead.
     /// </summary>
     // non-retail: the exact early-out of ObjectReach (retail tests every sphere)
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
     internal bool IsOutOfReach(in ObjectReach reach)
     {
         if ((_state & PhysicsState.HasPhysicsBsp) != 0 || _partArray is not SimplePartArray parts)
@@ -147,7 +148,8 @@ public sealed partial class PhysicsObj
             return false;
         }
 
-        Vector3 b = LandDefs.GetBlockOffset(reach.CellId, _position.ObjCellId);
+        // GetBlockOffset's own first test, done here so that an obstacle of the same landblock costs no call.
+        Vector3 b = (reach.CellId >> 16) == (_position.ObjCellId >> 16) ? Vector3.Zero : LandDefs.GetBlockOffset(reach.CellId, _position.ObjCellId);
         Vector3 o = _position.Frame.Origin;
         return reach.Excludes((double)b.X + o.X, (double)b.Y + o.Y, (double)b.Z + o.Z, System.Math.Abs((double)Scale) * bound);
     }
