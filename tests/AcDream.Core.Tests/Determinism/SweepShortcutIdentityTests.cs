@@ -101,6 +101,46 @@ public class SweepShortcutIdentityTests
         }
     }
 
+    [Fact]
+    public void ObjectReach_MarginsAndBox_AsDocumented()
+    {
+        Assert.Equal(0.05, ObjectReach.Margin);
+        Assert.Equal(1e-4, ObjectReach.RelativeMargin);
+
+        // One check sphere at (10, 10, 10), r = 0.5: the box is [9.5, 10.5] on each axis.
+        var path = new SpherePath();
+        path.InitSphere(new[] { new Sphere(Vector3.Zero, 0.5f) }, 1f);
+        path.CheckPos = new Position(0xA9B40001, new Vector3(10f, 10f, 10f));
+        path.CacheGlobalSphere();
+        var reach = new ObjectReach(path);
+        Assert.Equal(9.5, reach.MinX);
+        Assert.Equal(10.5, reach.MaxZ);
+
+        // An obstacle reaching 0.3 m from (11.9, 10, 10): m = 0.3 + 0.05 + 1e-4 * (11.9 + 10 + 10 + 0.3) = 0.35322, and
+        // 11.9 - 0.35322 = 11.54678 > 10.5: out of reach. From (10.85, 10, 10): m = 0.353115, 10.85 - m = 10.496885 < 10.5.
+        Assert.True(reach.Excludes(11.9, 10.0, 10.0, 0.3));
+        Assert.False(reach.Excludes(10.85, 10.0, 10.0, 0.3));
+        Assert.False(reach.Excludes(double.NaN, 10.0, 10.0, 0.3));
+        Assert.False(reach.Excludes(100.0, 10.0, 10.0, double.NaN));
+    }
+
+    [Fact]
+    public void ObstacleReach_BoundsEverySphere_AndIsOffWithCylinders()
+    {
+        // Created with one dummy sphere: centre (0, 0, 0.1), r = 0.1 (PhysicsGlobals.DummySphereRadius): 0.2.
+        var parts = new AcDream.Core.Physics.Objects.Parts.SimplePartArray(1, 1);
+        Assert.Equal((float)((double)PhysicsGlobals.DummySphereRadius + PhysicsGlobals.DummySphereRadius), parts.ObstacleReach);
+
+        // (0, 0, 0.5) r 0.5 reaches 1; (0.3, -0.4, 1.5) r 0.5 reaches 0.3 + 0.4 + 1.5 + 0.5 = 2.7 (in double from the floats
+        // 2.70000001192..., stored as the float 2.7f = 2.70000004768..., which is not below it).
+        parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f), new Sphere(new Vector3(0.3f, -0.4f, 1.5f), 0.5f) });
+        Assert.Equal(2.7f, parts.ObstacleReach);
+        Assert.True(parts.ObstacleReach >= (double)0.3f + 0.4f + 1.5f + 0.5f);
+
+        parts.SetCylSpheres(new[] { new CylSphere(Vector3.Zero, 0.5f, 1.8f) });
+        Assert.Equal(-1f, parts.ObstacleReach);
+    }
+
     // A coordinate for a sphere of radius r: anywhere in and around the landblock, or within a few ulps of a cell edge or of
     // the radius from one (where the edge tests turn), or of 0, EPSILON and 192.
     private static float Coordinate(Random rng, float r)
