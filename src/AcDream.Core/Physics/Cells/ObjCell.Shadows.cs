@@ -83,11 +83,39 @@ public abstract partial class ObjCell
         }
 
         PhysicsObj? mover = transition.ObjectInfo.Object;
+        bool skipFar = !transition.ReferencePaths;
+        bool reachValid = false;
+        ObjectReach reach = default;
         for (int i = 0; i < NumShadowObjects; i++)
         {
             PhysicsObj obj = _shadowObjects[i].PhysObj;
             if (obj.Parent is null && !ReferenceEquals(obj, mover))
             {
+                if (skipFar)
+                {
+                    // non-retail: an obstacle whose spheres cannot reach the check spheres is skipped with the exact
+                    // effect of testing it (ObjectReach); the box is rebuilt after every obstacle really tested, since a
+                    // test that answers OK may still have moved the check position (a step up).
+                    if (!reachValid)
+                    {
+                        reach = new ObjectReach(transition.SpherePath);
+                        reachValid = true;
+                    }
+
+                    if (obj.IsOutOfReach(reach))
+                    {
+                        // Skipping can only clear the obstruction flag: nothing to do when it is clear.
+                        if (transition.SpherePath.ObstructionEthereal)
+                        {
+                            obj.SkipOutOfReach(transition);
+                        }
+
+                        continue;
+                    }
+
+                    reachValid = false;
+                }
+
                 result = obj.FindObjCollisions(transition);
                 if (result != TransitionState.Ok)
                 {

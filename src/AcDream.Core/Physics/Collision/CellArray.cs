@@ -30,6 +30,10 @@ internal sealed class CellArray
     /// <summary>Restrict an interior search to cells already loaded. Retail: <c>do_not_load_cells</c>.</summary>
     public bool DoNotLoadCells;
 
+    /// <summary>Build the list the plain retail way, without the port's shortcut for spheres inside one landblock's
+    /// cells (<see cref="Cells.CellList.TryInteriorCells"/>); set with <see cref="Transition.ReferencePaths"/>.</summary>
+    public bool ReferencePaths;
+
     /// <summary>Number of cells. Retail: <c>num_cells</c>.</summary>
     public int NumCells;
 

@@ -9,9 +9,16 @@ internal sealed partial class SpherePath
 {
     /// <summary>Places the local spheres at <see cref="CurrPos"/> into <see cref="GlobalCurrCenter"/>.</summary>
     // retail: SPHEREPATH::cache_global_curr_center (acclient.c:313696)
-    public void CacheGlobalCurrCenter()
+    public void CacheGlobalCurrCenter() => CacheGlobalCurrCenter(CurrPos.Frame);
+
+    /// <summary>
+    /// <see cref="CacheGlobalCurrCenter()"/> from <paramref name="f"/>, a frame with the bits of
+    /// <see cref="CurrPos"/>'s (the one it was just copied from: reading the source of a fresh copy instead of the copy
+    /// avoids waiting for the copy's stores).
+    /// </summary>
+    // retail: SPHEREPATH::cache_global_curr_center (acclient.c:313696)
+    public void CacheGlobalCurrCenter(in Frame f)
     {
-        ref readonly Frame f = ref CurrPos.Frame;
         for (int i = 0; i < NumSphere; i++)
         {
             Vector3 c = LocalSphere[i].Center;
@@ -43,6 +50,47 @@ internal sealed partial class SpherePath
         float ly = (float)((double)f.M7 * l.Z + (double)f.M1 * l.X + (double)f.M4 * l.Y + f.Origin.Y);
         float lz = (float)((double)f.M8 * l.Z + (double)f.M2 * l.X + (double)f.M5 * l.Y + f.Origin.Z);
         GlobalLowPoint = new Vector3(lx, ly, lz);
+    }
+
+    /// <summary>
+    /// <see cref="CacheGlobalSphere()"/> for a check position whose frame is the one <see cref="GlobalCurrCenter"/> was
+    /// last computed from (the caller guarantees it): the sphere centres are taken from <see cref="GlobalCurrCenter"/>
+    /// when that gives the same bits, else recomputed. Both functions compute x and y with the same expressions; their z
+    /// sums differ only in the order of the terms M2·c.x and M5·c.y, so when both products are zero (a centre on the
+    /// local z axis, or a frame that only turns about z) both give ((M8·c.z + 0) + 0) + origin.z, whatever the signs of
+    /// the zeros. The low point is computed as always.
+    /// </summary>
+    /// <param name="f">A frame with the bits of <see cref="CheckPos"/>'s (CheckPos's own, or the one it was just copied
+    /// from).</param>
+    // non-retail: SPHEREPATH::cache_global_sphere (acclient.c:313747) reusing cache_global_curr_center's equal result
+    public void CacheGlobalSphereFromCurrCenter(in Frame f)
+    {
+        if (!ReferencePaths)
+        {
+            for (int i = 0; i < NumSphere; i++)
+            {
+                Vector3 c = LocalSphere[i].Center;
+                if ((double)f.M2 * c.X != 0.0 || (double)f.M5 * c.Y != 0.0)
+                {
+                    CacheGlobalSphere();
+                    return;
+                }
+            }
+
+            for (int i = 0; i < NumSphere; i++)
+            {
+                GlobalSphere[i] = new Sphere(GlobalCurrCenter[i], LocalSphere[i].Radius);
+            }
+
+            Vector3 l = LocalLowPoint;
+            float lx = (float)((double)f.M6 * l.Z + (double)f.M0 * l.X + (double)f.M3 * l.Y + f.Origin.X);
+            float ly = (float)((double)f.M7 * l.Z + (double)f.M1 * l.X + (double)f.M4 * l.Y + f.Origin.Y);
+            float lz = (float)((double)f.M8 * l.Z + (double)f.M2 * l.X + (double)f.M5 * l.Y + f.Origin.Z);
+            GlobalLowPoint = new Vector3(lx, ly, lz);
+            return;
+        }
+
+        CacheGlobalSphere();
     }
 
     /// <summary>Moves the cached global spheres and low point by <paramref name="offset"/> (no recompute from the frame).</summary>

@@ -23,6 +23,9 @@ internal sealed partial class SpherePath
     /// <summary>Most spheres a path carries. Retail: <c>init_sphere</c> clamps to 2 (acclient.c:313646).</summary>
     public const int MaxSpheres = 2;
 
+    /// <summary>Compute every cache the plain retail way (see <see cref="Transition.ReferencePaths"/>).</summary>
+    public bool ReferencePaths;
+
     /// <summary>Creates an empty path with its sphere arrays allocated.</summary>
     public SpherePath()
     {
@@ -226,7 +229,7 @@ internal sealed partial class SpherePath
         EndPos = endPos;
         CurrPos = hasBeginPos ? beginPos : endPos;
         CurrCell = beginCell;
-        CacheGlobalCurrCenter();
+        CacheGlobalCurrCenter(hasBeginPos ? beginPos.Frame : endPos.Frame);
         InsertType = hasBeginPos ? InsertType.Transition : InsertType.Placement;
     }
 

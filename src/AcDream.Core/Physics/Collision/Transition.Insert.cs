@@ -302,11 +302,11 @@ internal sealed partial class Transition
         {
             path.CurrPos = path.CheckPos;
             path.CurrCell = path.CheckCell;
-            path.CacheGlobalCurrCenter();
-            path.CheckPos = path.CurrPos;
-            path.CheckCell = path.CurrCell;
+            path.CacheGlobalCurrCenter(path.CheckPos.Frame);
+
+            // Retail then copies the current position and cell back into the check ones: the same bits, so not redone.
             path.CellArrayValid = false;
-            path.CacheGlobalSphere();
+            path.CacheGlobalSphereFromCurrCenter(path.CheckPos.Frame);
         }
         else if (ts > TransitionState.Ok && ts <= TransitionState.Slid)
         {

@@ -203,7 +203,15 @@ internal sealed partial class Transition
         path.CheckPos = path.CurrPos;
         path.CheckCell = path.CurrCell;
         path.CellArrayValid = false;
-        path.CacheGlobalSphere();
+        if (freeRotate)
+        {
+            path.CacheGlobalSphere();
+        }
+        else
+        {
+            // The current centres were cached from this frame by init_path.
+            path.CacheGlobalSphereFromCurrCenter(path.CurrPos.Frame);
+        }
 
         if (numSteps == 0)
         {

@@ -77,6 +77,22 @@ internal sealed partial class Transition
     /// <summary>The cells the check position overlaps. Retail: <c>cell_array</c>.</summary>
     public CellArray CellArray { get; } = new();
 
+    /// <summary>
+    /// Run the sweep the plain retail way, without the exact shortcuts of the port (obstacles out of reach skipped, the
+    /// outdoor cells of spheres inside one landblock's cells found directly, the check spheres taken from the current
+    /// centres when they are equal). Off by default; the tests turn it on in one of two worlds to show that
+    /// both give the same bits.
+    /// </summary>
+    internal bool ReferencePaths
+    {
+        get => CellArray.ReferencePaths;
+        set
+        {
+            CellArray.ReferencePaths = value;
+            SpherePath.ReferencePaths = value;
+        }
+    }
+
     /// <summary>Retail: <c>new_cell_ptr</c> (declared; unused by the outdoor sweep).</summary>
     public ObjCell? NewCellPtr { get; set; }
 

@@ -29,6 +29,19 @@ internal sealed class TransitionPool
         }
     }
 
+    /// <summary>Whether every transition runs the plain retail paths (<see cref="Transition.ReferencePaths"/>).</summary>
+    public bool ReferencePaths
+    {
+        get => _transitions[0].ReferencePaths;
+        set
+        {
+            for (int i = 0; i < Capacity; i++)
+            {
+                _transitions[i].ReferencePaths = value;
+            }
+        }
+    }
+
     /// <summary>Number of transitions in use (retail <c>transition_level</c>).</summary>
     public int Level { get; private set; }
 

@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Primitives;
@@ -123,6 +124,63 @@ public sealed partial class PhysicsObj
 
         path.ObstructionEthereal = false;
         return result;
+    }
+
+    /// <summary>
+    /// True when this object, as an obstacle where it stands, cannot reach the check spheres boxed by
+    /// <paramref name="reach"/>: it has no physics BSP, the built-in part array without cylinder spheres, and its spheres
+    /// (all within |scale| · <see cref="SimplePartArray.ObstacleReach"/> of its origin, whatever its orientation) lie
+    /// outside the box. <see cref="FindObjCollisions"/> then answers OK without touching anything but the obstruction
+    /// flag; the cell's object loop calls <see cref="SkipOutOfReach"/> instead.
+    /// </summary>
+    // non-retail: the exact early-out of ObjectReach (retail tests every sphere)
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    internal bool IsOutOfReach(in ObjectReach reach)
+    {
+        if ((_state & PhysicsState.HasPhysicsBsp) != 0 || _partArray is not SimplePartArray parts)
+        {
+            return false;
+        }
+
+        float bound = parts.ObstacleReach;
+        if (!(bound >= 0f))
+        {
+            return false;
+        }
+
+        // GetBlockOffset's own first test, done here so that an obstacle of the same landblock costs no call.
+        Vector3 b = (reach.CellId >> 16) == (_position.ObjCellId >> 16) ? Vector3.Zero : LandDefs.GetBlockOffset(reach.CellId, _position.ObjCellId);
+        Vector3 o = _position.Frame.Origin;
+        return reach.Excludes((double)b.X + o.X, (double)b.Y + o.Y, (double)b.Z + o.Z, System.Math.Abs((double)Scale) * bound);
+    }
+
+    /// <summary>
+    /// What <see cref="FindObjCollisions"/> does for an obstacle that is <see cref="IsOutOfReach"/>: it answers OK, and
+    /// clears the transition's obstruction flag unless one of its early exits (ethereal and ignoring collisions, a creature
+    /// seen by a viewer, an ethereal obstruction during a step down) comes first.
+    /// </summary>
+    // non-retail: the effect of CPhysicsObj::FindObjCollisions (acclient.c:316158) when no shape is reached
+    internal void SkipOutOfReach(Transition transition)
+    {
+        ObjectInfo oi = transition.ObjectInfo;
+        SpherePath path = transition.SpherePath;
+        if ((_state & PhysicsState.Ethereal) != 0 && (_state & PhysicsState.IgnoreCollisions) != 0)
+        {
+            return;
+        }
+
+        IWeenieObject? weenie = Weenie;
+        if (weenie is not null && (oi.State & ObjectInfoState.IsViewer) != 0 && weenie.IsCreature)
+        {
+            return;
+        }
+
+        if (((_state & PhysicsState.Ethereal) != 0 || (oi.Ethereal && (_state & PhysicsState.Static) == 0)) && path.StepDown)
+        {
+            return;
+        }
+
+        path.ObstructionEthereal = false;
     }
 
     // retail: CPartArray::FindObjCollisions (acclient.c:325463)

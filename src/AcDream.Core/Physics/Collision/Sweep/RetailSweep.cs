@@ -108,6 +108,14 @@ public sealed class RetailSweep : CollisionSweep
     /// <summary>The ten transitions (retail's static pool, per world here).</summary>
     internal TransitionPool Pool { get; }
 
+    /// <summary>Sweep the plain retail way, without the port's exact shortcuts (for tests that compare both; off by
+    /// default). See <see cref="Transition.ReferencePaths"/>.</summary>
+    internal bool ReferencePaths
+    {
+        get => Pool.ReferencePaths;
+        set => Pool.ReferencePaths = value;
+    }
+
     /// <summary>The scratch cell array of <see cref="PhysicsObj.CalcCrossCells"/>.</summary>
     internal CellArray CrossCells { get; } = new();
 

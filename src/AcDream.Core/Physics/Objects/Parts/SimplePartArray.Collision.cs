@@ -61,6 +61,36 @@ public sealed partial class SimplePartArray : IPartCollision
         }
 
         _cylSpheres = cylSpheres.ToArray();
+        UpdateObstacleReach();
+    }
+
+    /// <summary>
+    /// How far, in metres at scale 1, the collision spheres reach from the object's origin whatever its orientation: the
+    /// largest |c.x| + |c.y| + |c.z| + r (which bounds |c| + r); 0 without spheres, and -1 with cylinder spheres (the
+    /// object's shapes are then not only spheres). Kept up to date by the constructor, <see cref="SetSpheres"/> and
+    /// <see cref="SetCylSpheres"/>, so that a sweep can skip an obstacle out of reach without reading its spheres
+    /// (<see cref="PhysicsObj.IsOutOfReach"/>).
+    /// </summary>
+    internal float ObstacleReach { get; private set; }
+
+    private void UpdateObstacleReach()
+    {
+        if (_cylSpheres.Length != 0)
+        {
+            ObstacleReach = -1f;
+            return;
+        }
+
+        double reach = 0.0;
+        foreach (Sphere s in _spheres)
+        {
+            double r = (double)System.Math.Abs(s.Center.X) + System.Math.Abs(s.Center.Y) + System.Math.Abs(s.Center.Z) + System.Math.Abs(s.Radius);
+            reach = System.Math.Max(reach, r);
+        }
+
+        // Rounded up to the next float, so that the stored value never falls short of the double bound.
+        float f = (float)reach;
+        ObstacleReach = f < reach ? MathF.BitIncrement(f) : f;
     }
 
     /// <inheritdoc />

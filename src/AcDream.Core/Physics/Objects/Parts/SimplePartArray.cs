@@ -27,6 +27,7 @@ public sealed partial class SimplePartArray : IPartArray
         NumParts = numParts;
         _spheres = new Sphere[numSpheres];
         Array.Fill(_spheres, Sphere.Dummy);
+        UpdateObstacleReach();
         _partTranslucency = new float[numParts];
         _partLuminosity = new float[numParts];
         _partDiffusion = new float[numParts];
@@ -54,6 +55,7 @@ public sealed partial class SimplePartArray : IPartArray
         }
 
         _spheres = spheres.ToArray();
+        UpdateObstacleReach();
     }
 
     /// <inheritdoc />
