@@ -54,7 +54,7 @@ public sealed partial class PhysicsObj
         {
             World.Scene.WakeDormant(this);
         }
-        else if (!_scene.InActiveList && !_scene.PendingWake && WorldIndex >= 0)
+        else if (!_scene.InActiveList && !_scene.PendingWake && InWorld)
         {
             World.Scene.EnqueueWake(this);
         }

@@ -60,10 +60,11 @@ public sealed partial class PhysicsObj
     private IScriptManager? _scriptManager;
 
     // retail: CPhysicsObj::CPhysicsObj (acclient.c:319489)
-    internal PhysicsObj(PhysicsWorld world, uint id)
+    internal PhysicsObj(PhysicsWorld world, uint id, ulong creationNumber)
     {
         World = world;
         Id = id;
+        CreationNumber = creationNumber;
         PlayerVector = new Vector3(0f, 0f, 1f);
         PlayerDistance = float.MaxValue;
         _position = new Position(0, Frame.Identity);
@@ -79,8 +80,11 @@ public sealed partial class PhysicsObj
     /// <summary>The world that owns the object.</summary>
     public PhysicsWorld World { get; }
 
-    /// <summary>Index in the world's object list; -1 once removed.</summary>
-    internal int WorldIndex { get; set; }
+    /// <summary>The object's creation number in its world (0, 1, 2, …): orders objects of equal id (not retail).</summary>
+    internal ulong CreationNumber { get; }
+
+    /// <summary>True from creation until the object is removed from its world.</summary>
+    internal bool InWorld { get; set; }
 
     /// <summary>The object's id (retail <c>id</c>).</summary>
     public uint Id { get; }

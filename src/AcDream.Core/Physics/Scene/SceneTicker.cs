@@ -133,10 +133,11 @@ internal sealed partial class SceneTicker
     {
         playerVisited = false;
         int visits = 0;
-        for (_activeCursor = 0; _activeCursor < _activeCount; _activeCursor++)
+        _activeCursor = _active.Start();
+        while (_active.MoveNext(ref _activeCursor, out PhysicsObj obj))
         {
-            PhysicsObj obj = _active[_activeCursor];
             _current = obj;
+            _currentKey = _activeCursor.LastKey;
             obj.UpdateObject();
             visits++;
             if (obj == player)
