@@ -11,8 +11,8 @@ namespace AcDream.Core.Physics.Scene;
 /// <para>Retail keeps its objects in a hash table and walks it each tick; the library visits them in ascending id order, which
 /// the golden hashes pin. A flat sorted array makes an insertion or removal O(n) (100,000 objects streamed in descending id
 /// order cost seconds). Here the objects are held in blocks of at most <see cref="MaxBlock"/> entries, each block a sorted
-/// array of references with their keys beside them, and the blocks in order in one array: an insertion or removal finds its
-/// block by binary search (O(log n), reading only keys), shifts at most <see cref="MaxBlock"/> entries, and splits or merges a
+/// array of references with their ids beside them, and the blocks in order in one array: an insertion or removal finds its
+/// block by binary search (O(log n), reading ids, and objects only to order equal ids), shifts at most <see cref="MaxBlock"/> entries, and splits or merges a
 /// block now and then (O(n / MaxBlock) block moves once per ~<see cref="MinBlock"/> changes), whatever the order of ids. A walk
 /// in order reads contiguous references, as the flat array did.</para>
 /// <para>Blocks keep their capacity and are reused from a free list, so once the list has been as large as it gets, no change
@@ -90,9 +90,9 @@ internal sealed class VisitOrderList
 
         int tail = block.Count - at;
         Array.Copy(block.Items, at, block.Items, at + 1, tail);
-        Array.Copy(block.Keys, at, block.Keys, at + 1, tail);
+        Array.Copy(block.Ids, at, block.Ids, at + 1, tail);
         block.Items[at] = obj;
-        block.Keys[at] = key;
+        block.Ids[at] = obj.Id;
         block.Count++;
         _count++;
         _version++;
@@ -117,7 +117,7 @@ internal sealed class VisitOrderList
 
         int tail = block.Count - at - 1;
         Array.Copy(block.Items, at + 1, block.Items, at, tail);
-        Array.Copy(block.Keys, at + 1, block.Keys, at, tail);
+        Array.Copy(block.Ids, at + 1, block.Ids, at, tail);
         block.Count--;
         block.Items[block.Count] = null!;
         _count--;
@@ -145,7 +145,7 @@ internal sealed class VisitOrderList
                 }
 
                 block.Items[w] = o;
-                block.Keys[w] = block.Keys[i];
+                block.Ids[w] = block.Ids[i];
                 w++;
             }
 
@@ -234,7 +234,7 @@ internal sealed class VisitOrderList
 
         Block block = _blocks[c.Block];
         obj = block.Items[c.Index];
-        c.LastKey = block.Keys[c.Index];
+        c.LastKey = KeyOf(obj);
         c.Started = true;
         c.Index++;
         return true;
@@ -263,8 +263,17 @@ internal sealed class VisitOrderList
     private sealed class Block
     {
         internal readonly PhysicsObj[] Items = new PhysicsObj[MaxBlock];
-        internal readonly UInt128[] Keys = new UInt128[MaxBlock];
+        internal readonly uint[] Ids = new uint[MaxBlock];
         internal int Count;
+
+        // The key of entry i (its id from the block, its creation number from the object only when needed).
+        internal bool KeyLess(int i, UInt128 key)
+        {
+            uint id = (uint)(key >> 64);
+            return Ids[i] != id ? Ids[i] < id : Items[i].CreationNumber < (ulong)key;
+        }
+
+        internal bool KeyEquals(int i, UInt128 key) => Ids[i] == (uint)(key >> 64) && Items[i].CreationNumber == (ulong)key;
     }
 
     // The block that holds key, or would: the first whose last key is >= key (the last block when none).
@@ -275,7 +284,7 @@ internal sealed class VisitOrderList
         {
             int mid = (lo + hi) >> 1;
             Block m = _blocks[mid];
-            if (m.Keys[m.Count - 1] < key)
+            if (m.KeyLess(m.Count - 1, key))
             {
                 lo = mid + 1;
             }
@@ -300,7 +309,7 @@ internal sealed class VisitOrderList
         int b = FindBlock(key);
         Block block = _blocks[b];
         int at = LowerBound(block, key);
-        if (at < block.Count && block.Keys[at] == key)
+        if (at < block.Count && block.KeyEquals(at, key))
         {
             at++;
         }
@@ -312,11 +321,10 @@ internal sealed class VisitOrderList
     private static int LowerBound(Block block, UInt128 key)
     {
         int lo = 0, hi = block.Count;
-        UInt128[] keys = block.Keys;
         while (lo < hi)
         {
             int mid = (lo + hi) >> 1;
-            if (keys[mid] < key)
+            if (block.KeyLess(mid, key))
             {
                 lo = mid + 1;
             }
@@ -337,7 +345,7 @@ internal sealed class VisitOrderList
         int half = left.Count / 2;
         int moved = left.Count - half;
         Array.Copy(left.Items, half, right.Items, 0, moved);
-        Array.Copy(left.Keys, half, right.Keys, 0, moved);
+        Array.Copy(left.Ids, half, right.Ids, 0, moved);
         Array.Clear(left.Items, half, moved);
         right.Count = moved;
         left.Count = half;
@@ -366,7 +374,7 @@ internal sealed class VisitOrderList
         if (total <= MaxBlock)
         {
             Array.Copy(r.Items, 0, l.Items, l.Count, r.Count);
-            Array.Copy(r.Keys, 0, l.Keys, l.Count, r.Count);
+            Array.Copy(r.Ids, 0, l.Ids, l.Count, r.Count);
             l.Count = total;
             Array.Clear(r.Items, 0, r.Count);
             r.Count = 0;
@@ -380,9 +388,9 @@ internal sealed class VisitOrderList
             // Move the front of r to the end of l.
             int n = target - l.Count;
             Array.Copy(r.Items, 0, l.Items, l.Count, n);
-            Array.Copy(r.Keys, 0, l.Keys, l.Count, n);
+            Array.Copy(r.Ids, 0, l.Ids, l.Count, n);
             Array.Copy(r.Items, n, r.Items, 0, r.Count - n);
-            Array.Copy(r.Keys, n, r.Keys, 0, r.Count - n);
+            Array.Copy(r.Ids, n, r.Ids, 0, r.Count - n);
             Array.Clear(r.Items, r.Count - n, n);
             l.Count += n;
             r.Count -= n;
@@ -392,9 +400,9 @@ internal sealed class VisitOrderList
             // Move the end of l to the front of r.
             int n = l.Count - target;
             Array.Copy(r.Items, 0, r.Items, n, r.Count);
-            Array.Copy(r.Keys, 0, r.Keys, n, r.Count);
+            Array.Copy(r.Ids, 0, r.Ids, n, r.Count);
             Array.Copy(l.Items, target, r.Items, 0, n);
-            Array.Copy(l.Keys, target, r.Keys, 0, n);
+            Array.Copy(l.Ids, target, r.Ids, 0, n);
             Array.Clear(l.Items, target, n);
             l.Count = target;
             r.Count += n;
