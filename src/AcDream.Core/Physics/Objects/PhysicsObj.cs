@@ -54,10 +54,7 @@ public sealed partial class PhysicsObj
     private float _translucencyOriginal;
     private IPartArray? _partArray;
     private IMovementManager? _movementManager;
-    private IDetectionManager? _detectionManager;
-    private ITargetManager? _targetManager;
-    private IParticleManager? _particleManager;
-    private IScriptManager? _scriptManager;
+    private RareComponents? _rare;
 
     // retail: CPhysicsObj::CPhysicsObj (acclient.c:319489)
     internal PhysicsObj(PhysicsWorld world, uint id, ulong creationNumber)
@@ -246,44 +243,44 @@ public sealed partial class PhysicsObj
     /// <summary>Detection manager seam, or null.</summary>
     public IDetectionManager? DetectionManager
     {
-        get => _detectionManager;
+        get => _rare?.DetectionManager;
         set
         {
             Touch();
-            _detectionManager = value;
+            Rare(value is not null)?.DetectionManager = value;
         }
     }
 
     /// <summary>Target manager seam, or null.</summary>
     public ITargetManager? TargetManager
     {
-        get => _targetManager;
+        get => _rare?.TargetManager;
         set
         {
             Touch();
-            _targetManager = value;
+            Rare(value is not null)?.TargetManager = value;
         }
     }
 
     /// <summary>Particle manager seam, or null (runs for inactive objects too).</summary>
     public IParticleManager? ParticleManager
     {
-        get => _particleManager;
+        get => _rare?.ParticleManager;
         set
         {
             Touch();
-            _particleManager = value;
+            Rare(value is not null)?.ParticleManager = value;
         }
     }
 
     /// <summary>Script manager seam, or null (runs for inactive objects too).</summary>
     public IScriptManager? ScriptManager
     {
-        get => _scriptManager;
+        get => _rare?.ScriptManager;
         set
         {
             Touch();
-            _scriptManager = value;
+            Rare(value is not null)?.ScriptManager = value;
         }
     }
 
@@ -307,6 +304,18 @@ public sealed partial class PhysicsObj
     /// <inheritdoc />
     public override string ToString() =>
         string.Create(System.Globalization.CultureInfo.InvariantCulture, $"PhysicsObj 0x{Id:X8} {_position}");
+
+    // The side object of the rarely set seams, created when one is first set (at setup, by the client); null when none is set
+    // and none has been, so that an object without them keeps one reference instead of four.
+    private RareComponents? Rare(bool create) => create ? _rare ??= new RareComponents() : _rare;
+
+    private sealed class RareComponents
+    {
+        public IDetectionManager? DetectionManager;
+        public ITargetManager? TargetManager;
+        public IParticleManager? ParticleManager;
+        public IScriptManager? ScriptManager;
+    }
 
     private static void ThrowIfNotFinite(Vector3 v, string name)
     {
