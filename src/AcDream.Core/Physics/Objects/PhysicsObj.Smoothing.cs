@@ -8,13 +8,9 @@ namespace AcDream.Core.Physics.Objects;
 // extrapolation. Under the retail default none of this runs.
 public sealed partial class PhysicsObj
 {
-    // What LinearExtrapolation keeps between reports; created at the object's first report in that mode (a network event, never
-    // inside the object's own update), so that the other modes keep nothing for it.
-    private Extrapolation? _extrapolation;
-
     /// <summary>Velocity (world axes, m/s) used by <see cref="RemoteSmoothing.LinearExtrapolation"/> since the last report;
     /// zero otherwise.</summary>
-    public Vector3 ExtrapolationVelocity => _extrapolation is { Extrapolating: true } e ? e.Velocity : Vector3.Zero;
+    public Vector3 ExtrapolationVelocity => _rare?.Extrapolation is { Extrapolating: true } e ? e.Velocity : Vector3.Zero;
 
     // The in-range branch of MoveOrTeleport under the world's profile: retail interpolates; the other modes place the body.
     private void FollowRemoteReport(in Position p)
@@ -29,7 +25,9 @@ public sealed partial class PhysicsObj
         PositionManager?.StopInterpolating();
         if (mode == RemoteSmoothing.LinearExtrapolation)
         {
-            Extrapolation e = _extrapolation ??= new Extrapolation();
+            // Created at the object's first report in this mode (a network event, never inside the object's own update).
+            RareComponents rare = Rare(create: true)!;
+            Extrapolation e = rare.Extrapolation ??= new Extrapolation();
             double now = World.CurrentTime;
             double span = now - e.LastReportTime;
             if (span > PhysicsGlobals.Epsilon)
@@ -50,7 +48,7 @@ public sealed partial class PhysicsObj
     // LinearExtrapolation: replaces the step's offset origin (root motion) by the extrapolation velocity × quantum.
     private void ApplyExtrapolation(ref Frame offset, float quantum)
     {
-        Extrapolation? e = _extrapolation;
+        Extrapolation? e = _rare?.Extrapolation;
         if (e is null || !e.Extrapolating || World.Profile.RemoteSmoothing != RemoteSmoothing.LinearExtrapolation)
         {
             return;

@@ -305,8 +305,9 @@ public sealed partial class PhysicsObj
     public override string ToString() =>
         string.Create(System.Globalization.CultureInfo.InvariantCulture, $"PhysicsObj 0x{Id:X8} {_position}");
 
-    // The side object of the rarely set seams, created when one is first set (at setup, by the client); null when none is set
-    // and none has been, so that an object without them keeps one reference instead of four.
+    // The side object of what few objects have: the detection, target, particle and script seams (created when one is first
+    // set, at setup, by the client) and the LinearExtrapolation state (created at the first report in that mode); null until
+    // then, so that an object without them keeps one reference instead of five.
     private RareComponents? Rare(bool create) => create ? _rare ??= new RareComponents() : _rare;
 
     private sealed class RareComponents
@@ -315,6 +316,7 @@ public sealed partial class PhysicsObj
         public ITargetManager? TargetManager;
         public IParticleManager? ParticleManager;
         public IScriptManager? ScriptManager;
+        public Extrapolation? Extrapolation;
     }
 
     private static void ThrowIfNotFinite(Vector3 v, string name)
