@@ -240,6 +240,20 @@ internal sealed class VisitOrderList
         return true;
     }
 
+    /// <summary>The object <paramref name="k"/> places after the one the walk <paramref name="c"/> last returned, when it is in
+    /// the same block and the list has not changed since; otherwise null.</summary>
+    internal PhysicsObj? Ahead(in Cursor c, int k)
+    {
+        if (c.Version != _version || c.Block >= _blockCount)
+        {
+            return null;
+        }
+
+        Block b = _blocks[c.Block];
+        int i = c.Index - 1 + k;
+        return (uint)i < (uint)b.Count ? b.Items[i] : null;
+    }
+
     /// <summary>Where a walk stands in a <see cref="VisitOrderList"/>.</summary>
     internal struct Cursor
     {
