@@ -62,9 +62,9 @@ public class UpdateObjectBenchmarks
 internal static class BenchScene
 {
     /// <summary>An object with one collision sphere, moving at 1 m/s east and spinning at 0.5 rad/s, gravity off.</summary>
-    public static PhysicsObj CreateMover(PhysicsWorld world, Vector3 origin)
+    public static PhysicsObj CreateMover(PhysicsWorld world, Vector3 origin, uint id = 0)
     {
-        PhysicsObj obj = world.CreateObject();
+        PhysicsObj obj = world.CreateObject(id);
         obj.PartArray = new SimplePartArray(numParts: 1, numSpheres: 1);
         obj.EnterWorld(new Position(0xA9B40001u, origin));
         obj.SetState(obj.State & ~PhysicsState.Gravity);

@@ -5,7 +5,7 @@ namespace AcDream.Core.Physics.Objects;
 
 public sealed partial class PhysicsObj
 {
-    private readonly ushort[] _updateTimes = new ushort[9];
+    private UpdateTimeStamps _updateTimes;
 
     /// <summary>Last accepted 16-bit timestamp of <paramref name="stamp"/> (retail <c>update_times</c>).</summary>
     public ushort GetUpdateTime(PhysicsTimeStamp stamp) => _updateTimes[(int)stamp];

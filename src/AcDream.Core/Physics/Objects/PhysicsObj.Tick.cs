@@ -8,8 +8,6 @@ namespace AcDream.Core.Physics.Objects;
 
 public sealed partial class PhysicsObj
 {
-    private TransitionResult _transitionScratch;
-
     /// <summary>
     /// The per-frame update: the bail-outs, the 96 m player gate, then the object's elapsed time cut into steps by the world's
     /// <see cref="PhysicsProfile"/>. Normally run by <see cref="PhysicsWorld.UseTime"/>; callable directly after
@@ -119,17 +117,25 @@ public sealed partial class PhysicsObj
 
                     // non-retail: a scene without SceneEffects.Collision moves freely (retail: the transition)
                     CollisionSweep sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Sweep : FreeSpaceSweep.Instance;
-                    if (sweep.SweepObject(this, _position, newPos, false, ref _transitionScratch))
+                    ref TransitionResult scratch = ref World.EnterStepScratch();
+                    try
                     {
-                        Vector3 offset = _position.GetOffset(_transitionScratch.CurrentPosition);
-                        CachedVelocity = DivideByQuantum(offset, quantum);
-                        CommitTransition(_transitionScratch);
+                        if (sweep.SweepObject(this, _position, newPos, false, ref scratch))
+                        {
+                            Vector3 offset = _position.GetOffset(scratch.CurrentPosition);
+                            CachedVelocity = DivideByQuantum(offset, quantum);
+                            CommitTransition(scratch);
+                        }
+                        else
+                        {
+                            newPos.Frame.Origin = _position.Frame.Origin;
+                            StoreStepFrame(ref newPos.Frame);
+                            CachedVelocity = Vector3.Zero;
+                        }
                     }
-                    else
+                    finally
                     {
-                        newPos.Frame.Origin = _position.Frame.Origin;
-                        StoreStepFrame(ref newPos.Frame);
-                        CachedVelocity = Vector3.Zero;
+                        World.LeaveStepScratch();
                     }
                 }
             }

@@ -54,16 +54,14 @@ public sealed partial class PhysicsObj
     private float _translucencyOriginal;
     private IPartArray? _partArray;
     private IMovementManager? _movementManager;
-    private IDetectionManager? _detectionManager;
-    private ITargetManager? _targetManager;
-    private IParticleManager? _particleManager;
-    private IScriptManager? _scriptManager;
+    private RareComponents? _rare;
 
     // retail: CPhysicsObj::CPhysicsObj (acclient.c:319489)
-    internal PhysicsObj(PhysicsWorld world, uint id)
+    internal PhysicsObj(PhysicsWorld world, uint id, ulong creationNumber)
     {
         World = world;
         Id = id;
+        CreationNumber = creationNumber;
         PlayerVector = new Vector3(0f, 0f, 1f);
         PlayerDistance = float.MaxValue;
         _position = new Position(0, Frame.Identity);
@@ -79,8 +77,11 @@ public sealed partial class PhysicsObj
     /// <summary>The world that owns the object.</summary>
     public PhysicsWorld World { get; }
 
-    /// <summary>Index in the world's object list; -1 once removed.</summary>
-    internal int WorldIndex { get; set; }
+    /// <summary>The object's creation number in its world (0, 1, 2, …): orders objects of equal id (not retail).</summary>
+    internal ulong CreationNumber { get; }
+
+    /// <summary>True from creation until the object is removed from its world.</summary>
+    internal bool InWorld { get; set; }
 
     /// <summary>True once <see cref="PhysicsWorld.RemoveObject"/> took the object out of its world (for good): a step in
     /// progress stops, and the object never lists itself in a cell again.</summary>
@@ -261,44 +262,44 @@ public sealed partial class PhysicsObj
     /// <summary>Detection manager seam, or null.</summary>
     public IDetectionManager? DetectionManager
     {
-        get => _detectionManager;
+        get => _rare?.DetectionManager;
         set
         {
             Touch();
-            _detectionManager = value;
+            Rare(value is not null)?.DetectionManager = value;
         }
     }
 
     /// <summary>Target manager seam, or null.</summary>
     public ITargetManager? TargetManager
     {
-        get => _targetManager;
+        get => _rare?.TargetManager;
         set
         {
             Touch();
-            _targetManager = value;
+            Rare(value is not null)?.TargetManager = value;
         }
     }
 
     /// <summary>Particle manager seam, or null (runs for inactive objects too).</summary>
     public IParticleManager? ParticleManager
     {
-        get => _particleManager;
+        get => _rare?.ParticleManager;
         set
         {
             Touch();
-            _particleManager = value;
+            Rare(value is not null)?.ParticleManager = value;
         }
     }
 
     /// <summary>Script manager seam, or null (runs for inactive objects too).</summary>
     public IScriptManager? ScriptManager
     {
-        get => _scriptManager;
+        get => _rare?.ScriptManager;
         set
         {
             Touch();
-            _scriptManager = value;
+            Rare(value is not null)?.ScriptManager = value;
         }
     }
 
@@ -322,6 +323,20 @@ public sealed partial class PhysicsObj
     /// <inheritdoc />
     public override string ToString() =>
         string.Create(System.Globalization.CultureInfo.InvariantCulture, $"PhysicsObj 0x{Id:X8} {_position}");
+
+    // The side object of what few objects have: the detection, target, particle and script seams (created when one is first
+    // set, at setup, by the client) and the LinearExtrapolation state (created at the first report in that mode); null until
+    // then, so that an object without them keeps one reference instead of five.
+    private RareComponents? Rare(bool create) => create ? _rare ??= new RareComponents() : _rare;
+
+    private sealed class RareComponents
+    {
+        public IDetectionManager? DetectionManager;
+        public ITargetManager? TargetManager;
+        public IParticleManager? ParticleManager;
+        public IScriptManager? ScriptManager;
+        public Extrapolation? Extrapolation;
+    }
 
     private static void ThrowIfNotFinite(Vector3 v, string name)
     {

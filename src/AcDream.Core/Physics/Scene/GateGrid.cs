@@ -10,7 +10,7 @@ namespace AcDream.Core.Physics.Scene;
 /// </summary>
 /// <remarks>
 /// Cells are found by a hash of their coordinates (open addressing; allocation only when it grows). A cell keeps its entries in
-/// an array and the z range they have had, so that a cell wholly inside or outside an annulus is skipped in 3D. A removed entry
+/// a range of one array shared by all cells (see <c>_arena</c>) and the z range they have had, so that a cell wholly inside or outside an annulus is skipped in 3D. A removed entry
 /// is only marked dead (slot −1) and its cell listed; <see cref="Sweep"/> closes the gaps later, at a moment when no place
 /// taken by <see cref="Select"/> is still in use (the queue sweeps at the end of each tick's test, <see cref="GateQueue.Finish"/>). Entry positions are float offsets
 /// from the cell's corner (x, y, within 1e-6 m) and the float z the object's position holds.
@@ -33,12 +33,23 @@ internal sealed class GateGrid
     private struct Cell
     {
         public int Cx, Cy;
-        public Entry[] Entries;
+        public int Start, Capacity; // the cell's range of the arena
         public int Count;
         public float ZMin, ZMax;
         public bool Dirty; // holds dead entries
     }
 
+    // A new cell's first range; ranges double as the cell fills.
+    private const int InitialCellCapacity = 8;
+
+    // Every cell's entries, each cell in its own range. A cell that outgrows its range moves to a range twice as large at the
+    // end of the used part (its old range becomes a hole); when the end has no room, the ranges are packed into the spare
+    // buffer (the holes dropped) and the buffers swapped; only when the packed ranges still leave no room do the buffers grow,
+    // to twice what the cells then need. So the grid allocates only when the capacity its cells need in total reaches a new
+    // high (and then with room to spare), not whenever one cell outgrows its largest size so far.
+    private Entry[] _arena = new Entry[256];
+    private Entry[] _spare = new Entry[256];
+    private int _arenaUsed;
     private Cell[] _cells = new Cell[16];
     private int _cellCount;
     private long[] _keys = new long[64];
@@ -52,13 +63,13 @@ internal sealed class GateGrid
     public GateGrid() => Array.Fill(_cellAt, -1);
 
     /// <summary>The entry at a place.</summary>
-    public ref Entry At(int cell, int index) => ref _cells[cell].Entries[index];
+    public ref Entry At(int cell, int index) => ref _arena[_cells[cell].Start + index];
 
     /// <summary>An entry's global position (the cell's corner plus its offsets).</summary>
     public void Global(int cell, int index, out double x, out double y, out double z)
     {
         ref Cell c = ref _cells[cell];
-        ref Entry e = ref c.Entries[index];
+        ref Entry e = ref _arena[c.Start + index];
         x = c.Cx * CellSize + e.X;
         y = c.Cy * CellSize + e.Y;
         z = e.Z;
@@ -69,15 +80,15 @@ internal sealed class GateGrid
     {
         int cx = (int)System.Math.Floor(x / CellSize), cy = (int)System.Math.Floor(y / CellSize);
         cell = FindOrAddCell(cx, cy);
-        ref Cell c = ref _cells[cell];
-        if (c.Count == c.Entries.Length)
+        if (_cells[cell].Count == _cells[cell].Capacity)
         {
-            Array.Resize(ref c.Entries, c.Entries.Length * 2);
+            GrowCell(cell);
         }
 
+        ref Cell c = ref _cells[cell];
         index = c.Count++;
         Held++;
-        c.Entries[index] = new Entry
+        _arena[c.Start + index] = new Entry
         {
             Slot = slot,
             Generation = generation,
@@ -96,7 +107,7 @@ internal sealed class GateGrid
     public void Remove(int cell, int index)
     {
         ref Cell c = ref _cells[cell];
-        c.Entries[index].Slot = -1;
+        _arena[c.Start + index].Slot = -1;
         if (!c.Dirty)
         {
             c.Dirty = true;
@@ -120,15 +131,15 @@ internal sealed class GateGrid
             int w = 0;
             for (int i = 0; i < c.Count; i++)
             {
-                if (c.Entries[i].Slot < 0)
+                if (_arena[c.Start + i].Slot < 0)
                 {
                     continue;
                 }
 
                 if (w != i)
                 {
-                    c.Entries[w] = c.Entries[i];
-                    queue.EntryMoved(c.Entries[w].Slot, w);
+                    _arena[c.Start + w] = _arena[c.Start + i];
+                    queue.EntryMoved(_arena[c.Start + w].Slot, w);
                 }
 
                 w++;
@@ -173,7 +184,7 @@ internal sealed class GateGrid
             tested += c.Count;
             for (int i = 0; i < c.Count; i++)
             {
-                ref Entry e = ref c.Entries[i];
+                ref Entry e = ref _arena[c.Start + i];
                 if (e.Slot < 0)
                 {
                     continue; // dead
@@ -261,7 +272,7 @@ internal sealed class GateGrid
         }
 
         int cell = _cellCount++;
-        _cells[cell] = new Cell { Cx = cx, Cy = cy, Entries = new Entry[8], ZMin = float.PositiveInfinity, ZMax = float.NegativeInfinity };
+        _cells[cell] = new Cell { Cx = cx, Cy = cy, Start = 0, Capacity = 0, ZMin = float.PositiveInfinity, ZMax = float.NegativeInfinity };
         _keys[h] = key;
         _cellAt[h] = cell;
         if (_cellCount * 2 > _keys.Length)
@@ -296,5 +307,64 @@ internal sealed class GateGrid
     {
         ulong k = (ulong)key * 0x9E3779B97F4A7C15UL;
         return (int)(k >> 33);
+    }
+
+    // Gives cell a range twice its capacity (InitialCellCapacity for a new cell), its entries copied to the same indexes.
+    private void GrowCell(int cell)
+    {
+        ref Cell c = ref _cells[cell];
+        int capacity = c.Capacity == 0 ? InitialCellCapacity : c.Capacity * 2;
+        if (c.Start + c.Capacity == _arenaUsed && c.Capacity != 0 && c.Start + capacity <= _arena.Length)
+        {
+            // The last range: it grows in place.
+            _arenaUsed = c.Start + capacity;
+            c.Capacity = capacity;
+            return;
+        }
+
+        if (_arenaUsed + capacity > _arena.Length)
+        {
+            PackRanges(cell, capacity);
+            return;
+        }
+
+        Array.Copy(_arena, c.Start, _arena, _arenaUsed, c.Count);
+        c.Start = _arenaUsed;
+        c.Capacity = capacity;
+        _arenaUsed += capacity;
+    }
+
+    // Packs every range into the spare buffer (cell `growing` with range `capacity`), growing both buffers first when the
+    // packed ranges would not fit, then swaps the buffers.
+    private void PackRanges(int growing, int capacity)
+    {
+        int needed = capacity - _cells[growing].Capacity;
+        for (int i = 0; i < _cellCount; i++)
+        {
+            needed += _cells[i].Capacity;
+        }
+
+        if (needed > _spare.Length)
+        {
+            int size = System.Math.Max(_arena.Length * 2, (int)System.Numerics.BitOperations.RoundUpToPowerOf2((uint)needed * 2));
+            _spare = new Entry[size];
+            Entry[] grown = new Entry[size];
+            Array.Copy(_arena, grown, _arenaUsed);
+            _arena = grown;
+        }
+
+        int at = 0;
+        for (int i = 0; i < _cellCount; i++)
+        {
+            ref Cell c = ref _cells[i];
+            int cap = i == growing ? capacity : c.Capacity;
+            Array.Copy(_arena, c.Start, _spare, at, c.Count);
+            c.Start = at;
+            c.Capacity = cap;
+            at += cap;
+        }
+
+        (_arena, _spare) = (_spare, _arena);
+        _arenaUsed = at;
     }
 }

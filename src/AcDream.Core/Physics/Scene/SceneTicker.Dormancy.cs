@@ -33,8 +33,8 @@ internal sealed partial class SceneTicker
             return false;
         }
 
-        // Relative order never changes (creation and removal keep it), so the live indexes decide before/after.
-        bool afterPlayer = obj.WorldIndex > p.WorldIndex;
+        // The visiting order is fixed by id and creation number, so the keys decide before/after.
+        bool afterPlayer = VisitOrderList.Precedes(p, obj);
         seen = visitedThisTick
             ? (afterPlayer ? _playerAfterNow : _playerBeforeNow)
             : (afterPlayer ? _playerAfterPrev : _playerBeforePrev);

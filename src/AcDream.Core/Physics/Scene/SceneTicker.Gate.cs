@@ -89,42 +89,56 @@ internal sealed partial class SceneTicker
         // wait a tick before they sleep.
         PhysicsObj? player = _world.Player;
         bool gateReady = player == _playerSeenNow;
-        int w = 0;
-        for (int i = 0; i < _activeCount; i++)
-        {
-            PhysicsObj o = _active[i];
-            Dormancy d = ClassifyForSleep(o, out float margin);
-            if (d == Dormancy.Awake || (!gateReady && !float.IsNaN(margin)))
-            {
-                _active[w++] = o;
-                continue;
-            }
+        var filter = new SleepFilter(this, player, gateReady);
+        _active.RemoveWhere(ref filter);
+    }
 
-            ref SceneSlot s = ref o._scene;
-            s.InActiveList = false;
-            s.Dormancy = d;
-            s.SleepTick = _tick;
-            s.SleepPhaseActive = (o._transientState & TransientState.Active) != 0;
-            GateQueue.Forget(o);
-            if (!float.IsNaN(margin) && d != Dormancy.Bailed)
+    // PutIdleToSleep's pass over the visiting list: puts each object whose next visits would change nothing to sleep (and
+    // into its gate queue) and takes it out of the list.
+    private struct SleepFilter : VisitOrderList.IRemovalFilter
+    {
+        private readonly SceneTicker _ticker;
+        private readonly PhysicsObj? _player;
+        private readonly bool _gateReady;
+
+        internal SleepFilter(SceneTicker ticker, PhysicsObj? player, bool gateReady)
+        {
+            _ticker = ticker;
+            _player = player;
+            _gateReady = gateReady;
+        }
+
+        public bool ShouldRemove(PhysicsObj o) => _ticker.TryPutToSleep(o, _player, _gateReady);
+    }
+
+    // Puts o to sleep when its next visits would change nothing but bookkeeping; false when it stays awake.
+    private bool TryPutToSleep(PhysicsObj o, PhysicsObj? player, bool gateReady)
+    {
+        Dormancy d = ClassifyForSleep(o, out float margin);
+        if (d == Dormancy.Awake || (!gateReady && !float.IsNaN(margin)))
+        {
+            return false;
+        }
+
+        ref SceneSlot s = ref o._scene;
+        s.InActiveList = false;
+        s.Dormancy = d;
+        s.SleepTick = _tick;
+        s.SleepPhaseActive = (o._transientState & TransientState.Active) != 0;
+        GateQueue.Forget(o);
+        if (!float.IsNaN(margin) && d != Dormancy.Bailed)
+        {
+            // Idle: it never moves on either side of the gate, so a crossing only changes its bookkeeping (no visit).
+            bool idle = IsIdle(o);
+            if (_world.GateTracking == GateTracking.Exact || !idle)
             {
-                // Idle: it never moves on either side of the gate, so a crossing only changes its bookkeeping (no visit).
-                bool idle = IsIdle(o);
-                if (_world.GateTracking == GateTracking.Exact || !idle)
-                {
-                    bool before = player is not null && o.WorldIndex < player.WorldIndex;
-                    float pd = s.PlayerDistance;
-                    (before ? _gateBefore : _gateAfter).Add(o, pd > PhysicsGlobals.PlayerActivityDistance, idle,
-                        (o._transientState & TransientState.OnWalkable) != 0);
-                }
+                bool before = player is not null && VisitOrderList.Precedes(o, player);
+                float pd = s.PlayerDistance;
+                (before ? _gateBefore : _gateAfter).Add(o, pd > PhysicsGlobals.PlayerActivityDistance, idle,
+                    (o._transientState & TransientState.OnWalkable) != 0);
             }
         }
 
-        for (int i = w; i < _activeCount; i++)
-        {
-            _active[i] = null!;
-        }
-
-        _activeCount = w;
+        return true;
     }
 }

@@ -6,18 +6,20 @@ namespace AcDream.Core.Physics.Scene;
 // The visiting list (the awake objects, in the world's order) and the wakes.
 internal sealed partial class SceneTicker
 {
-    private PhysicsObj[] _active = new PhysicsObj[16];
-    private int _activeCount;
-    private int _activeCursor;
+    private readonly VisitOrderList _active = new();
+    private VisitOrderList.Cursor _activeCursor;
     private PhysicsObj[] _pending = new PhysicsObj[16];
     private int _pendingCount;
+    private int _pendingStale;
     private PhysicsObj? _current;
+    private UInt128 _currentKey;
 
     /// <summary>Number of awake objects: in the visiting list or waiting to join it.</summary>
-    internal int AwakeCount => _activeCount + _pendingCount;
+    internal int AwakeCount => _active.Count + _pendingCount - _pendingStale;
 
     /// <summary>True when, during a tick, the object's place in the visiting order has already passed (retail already visited it).</summary>
-    internal bool IsVisitedThisTick(PhysicsObj obj) => !_inTick || (_current is not null && obj.WorldIndex <= _current.WorldIndex);
+    internal bool IsVisitedThisTick(PhysicsObj obj) =>
+        !_inTick || (_current is not null && VisitOrderList.KeyOf(obj) <= _currentKey);
 
     /// <summary>Puts an awake object that is not in the visiting list into the list (before the next visit in order).</summary>
     internal void EnqueueWake(PhysicsObj obj)
@@ -49,10 +51,10 @@ internal sealed partial class SceneTicker
     /// <summary>Wakes every dormant object that depends on the player or on object maintenance (they changed).</summary>
     internal void WakeGatedDormant()
     {
-        int count = _world.ObjectCount;
-        for (int i = 0; i < count; i++)
+        VisitOrderList objects = _world.Objects;
+        VisitOrderList.Cursor cursor = objects.Start();
+        while (objects.MoveNext(ref cursor, out PhysicsObj o))
         {
-            PhysicsObj o = _world.ObjectAt(i);
             if (o._scene.IsLazy)
             {
                 WakeDormant(o);
@@ -67,24 +69,20 @@ internal sealed partial class SceneTicker
         GateQueue.Forget(obj);
         if (s.InActiveList)
         {
-            int at = Array.IndexOf(_active, obj, 0, _activeCount);
-            Array.Copy(_active, at + 1, _active, at, _activeCount - at - 1);
-            _activeCount--;
-            _active[_activeCount] = null!;
+            _active.Remove(obj); // a walk in progress finds its place again by key
             s.InActiveList = false;
-            if (_inTick && at <= _activeCursor)
-            {
-                _activeCursor--;
-            }
         }
 
         if (s.PendingWake)
         {
-            int at = Array.IndexOf(_pending, obj, 0, _pendingCount);
-            Array.Copy(_pending, at + 1, _pending, at, _pendingCount - at - 1);
-            _pendingCount--;
-            _pending[_pendingCount] = null!;
+            // Left in the pending array as a stale entry (MergePending skips entries whose flag is clear); compacted once
+            // stale entries are half the array, so a removal costs O(1) amortised.
             s.PendingWake = false;
+            _pendingStale++;
+            if (_pendingStale * 2 > _pendingCount + 16)
+            {
+                CompactPending();
+            }
         }
 
         s.Dormancy = Dormancy.Awake;
@@ -92,34 +90,8 @@ internal sealed partial class SceneTicker
 
     private void InsertActive(PhysicsObj obj)
     {
-        if (_activeCount == _active.Length)
-        {
-            Array.Resize(ref _active, _active.Length * 2);
-        }
-
-        int idx = obj.WorldIndex;
-        int lo = 0, hi = _activeCount;
-        while (lo < hi)
-        {
-            int mid = (lo + hi) >> 1;
-            if (_active[mid].WorldIndex < idx)
-            {
-                lo = mid + 1;
-            }
-            else
-            {
-                hi = mid;
-            }
-        }
-
-        Array.Copy(_active, lo, _active, lo + 1, _activeCount - lo);
-        _active[lo] = obj;
-        _activeCount++;
+        _active.Insert(obj);
         obj._scene.InActiveList = true;
-        if (_inTick && lo <= _activeCursor)
-        {
-            _activeCursor++;
-        }
     }
 
     /// <summary>Objects woken since the last tick join the visiting list.</summary>
@@ -129,13 +101,37 @@ internal sealed partial class SceneTicker
         {
             PhysicsObj o = _pending[i];
             _pending[i] = null!;
+            if (!o._scene.PendingWake)
+            {
+                continue; // removed while pending
+            }
+
             o._scene.PendingWake = false;
-            if (o.WorldIndex >= 0 && !o._scene.InActiveList && o._scene.Dormancy == Dormancy.Awake)
+            if (!o._scene.InActiveList && o._scene.Dormancy == Dormancy.Awake)
             {
                 InsertActive(o);
             }
         }
 
         _pendingCount = 0;
+        _pendingStale = 0;
+    }
+
+    // Drops the pending entries of objects removed from the world.
+    private void CompactPending()
+    {
+        int w = 0;
+        for (int i = 0; i < _pendingCount; i++)
+        {
+            PhysicsObj o = _pending[i];
+            if (o._scene.PendingWake)
+            {
+                _pending[w++] = o;
+            }
+        }
+
+        Array.Clear(_pending, w, _pendingCount - w);
+        _pendingCount = w;
+        _pendingStale = 0;
     }
 }

@@ -30,6 +30,15 @@ namespace AcDream.Core.Physics.Scene;
 internal sealed partial class SceneTicker
 {
     private readonly PhysicsWorld _world;
+
+    // Reading ahead (VisitAwakeObjects): while an object is visited, the object 2 x LookAhead places on has its own fields
+    // read and the one LookAhead places on its part array's, so that their memory is on its way by the time they are visited.
+    // Objects are visited by id but lie in memory in creation order; created in random id order, each visit would otherwise
+    // wait for its memory (100,000 movers: 3.2 times the cost per object of the same movers created in id order, 1.75 times
+    // with reading ahead, CreationOrderTickBenchmarks). The reads change nothing; their sum goes to _lookAheadSink only so
+    // that they are not dropped.
+    private const int LookAhead = 6;
+    private int _lookAheadSink;
     private bool _inTick;
     private long _tick;
     private long _lastHugeTick = long.MinValue;
@@ -133,10 +142,23 @@ internal sealed partial class SceneTicker
     {
         playerVisited = false;
         int visits = 0;
-        for (_activeCursor = 0; _activeCursor < _activeCount; _activeCursor++)
+        _activeCursor = _active.Start();
+        while (_active.MoveNext(ref _activeCursor, out PhysicsObj obj))
         {
-            PhysicsObj obj = _active[_activeCursor];
             _current = obj;
+            _currentKey = _activeCursor.LastKey;
+            PhysicsObj? far = _active.Ahead(_activeCursor, LookAhead * 2);
+            if (far is not null)
+            {
+                _lookAheadSink += far.TouchForVisit();
+            }
+
+            PhysicsObj? near = _active.Ahead(_activeCursor, LookAhead);
+            if (near is not null)
+            {
+                _lookAheadSink += near.TouchComponentsForVisit();
+            }
+
             obj.UpdateObject();
             visits++;
             if (obj == player)

@@ -2,6 +2,7 @@ using System.Collections.Generic;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Scene;
 
 namespace AcDream.Core.Physics.World;
 
@@ -24,9 +25,9 @@ public sealed partial class PhysicsWorld
             return;
         }
 
-        for (int i = 0; i < _count; i++)
+        VisitOrderList.Cursor cursor = _objects.Start();
+        while (_objects.MoveNext(ref cursor, out PhysicsObj o))
         {
-            PhysicsObj o = _objects[i];
             // Children are shadowed with their parent (add_shadows_to_cells walks the child list).
             if (o.Parent is not null || o.CellId == 0 || ((o.CellId & mask) != id && !o.HasShadowIn(id, mask)))
             {
@@ -47,9 +48,9 @@ public sealed partial class PhysicsWorld
     internal void SendObjectsOutOfWorld(uint id, uint mask, ICollection<PhysicsObj>? leftWorld)
     {
         RetailSweep? sweep = _sweep as RetailSweep;
-        for (int i = 0; i < _count; i++)
+        VisitOrderList.Cursor cursor = _objects.Start();
+        while (_objects.MoveNext(ref cursor, out PhysicsObj o))
         {
-            PhysicsObj o = _objects[i];
             if (o.Parent is not null || o.CellId == 0)
             {
                 continue;

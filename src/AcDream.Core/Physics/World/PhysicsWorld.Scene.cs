@@ -34,7 +34,7 @@ public sealed partial class PhysicsWorld
     public int LastTickVisitCount { get; private set; }
 
     /// <summary>Number of objects currently dormant (never visited until an event wakes them).</summary>
-    public int DormantCount => _count - Scene.AwakeCount;
+    public int DormantCount => _objects.Count - Scene.AwakeCount;
 
     /// <summary>Dormant objects' copies re-measured against the 96 m gate since the world was created.</summary>
     internal long GateRemeasures => Scene.GateRemeasures;

@@ -16,12 +16,12 @@ namespace AcDream.Core.Physics.World;
 /// <remarks>Not thread-safe: one world is ticked by one thread at a time.</remarks>
 public sealed partial class PhysicsWorld
 {
-    private PhysicsObj[] _objects = new PhysicsObj[16];
-    private int _count;
+    // The object table, in ascending id order (equal ids: creation order), the order a tick visits objects in.
+    private readonly VisitOrderList _objects = new();
+    private ulong _created;
     private PhysicsObj? _player;
     private readonly System.Collections.Generic.Dictionary<uint, PhysicsObj> _byId = new();
     private bool _inUseTime;
-    private int _visitCursor;
 
     /// <summary>Creates a world whose clocks start at <paramref name="startTime"/> seconds.</summary>
     /// <param name="startTime">Initial client time, seconds.</param>
@@ -121,7 +121,7 @@ public sealed partial class PhysicsWorld
     public IScriptPlayer? ScriptPlayer { get; set; }
 
     /// <summary>Number of objects the world owns.</summary>
-    public int ObjectCount => _count;
+    public int ObjectCount => _objects.Count;
 
     /// <summary>
     /// The player object (retail <c>CPhysicsObj::player_object</c>): objects measure their distance to it. Null for none.
@@ -135,7 +135,7 @@ public sealed partial class PhysicsWorld
         get => _player;
         set
         {
-            if (value is not null && (value.World != this || value.WorldIndex < 0))
+            if (value is not null && (value.World != this || !value.InWorld))
             {
                 throw new ArgumentException("The player must be an object of this world.", nameof(value));
             }
@@ -158,20 +158,20 @@ public sealed partial class PhysicsWorld
     }
 
     /// <summary>Object <paramref name="index"/> (0 &lt;= index &lt; <see cref="ObjectCount"/>), in ascending id order (objects
-    /// with equal ids in creation order): the order in which a tick visits them.</summary>
+    /// with equal ids in creation order): the order in which a tick visits them. Consecutive indexes cost O(1) each.</summary>
     /// <exception cref="ArgumentOutOfRangeException">Index out of range.</exception>
     public PhysicsObj GetObject(int index)
     {
-        if ((uint)index >= (uint)_count)
+        if ((uint)index >= (uint)_objects.Count)
         {
             throw new ArgumentOutOfRangeException(nameof(index));
         }
 
-        return _objects[index];
+        return _objects.At(index);
     }
 
-    /// <summary>Object <paramref name="index"/> (unchecked: 0 &lt;= index &lt; <see cref="ObjectCount"/>).</summary>
-    internal PhysicsObj ObjectAt(int index) => _objects[index];
+    /// <summary>The object table, in visiting order.</summary>
+    internal VisitOrderList Objects => _objects;
 
     /// <summary>The object with id <paramref name="id"/> (the first created with that id), or null
     /// (retail <c>CPhysicsObj::GetObjectA</c> through the object maintainer's table, acclient.c:316437).</summary>
@@ -181,33 +181,11 @@ public sealed partial class PhysicsWorld
     /// table). It is not in a cell until placed (<see cref="PhysicsObj.EnterWorld"/> or <see cref="PhysicsObj.SetPositionSimple"/>).</summary>
     public PhysicsObj CreateObject(uint id = 0)
     {
-        var obj = new PhysicsObj(this, id);
-        if (_count == _objects.Length)
-        {
-            Array.Resize(ref _objects, _objects.Length * 2);
-        }
-
-        // Keep ascending id order (equal ids: creation order) so that a tick visits objects in the same order whatever the
-        // order of creation. Retail walks its hash table; any fixed order is as retail-like as another.
-        int at = _count;
-        while (at > 0 && _objects[at - 1].Id > id)
-        {
-            at--;
-        }
-
-        Array.Copy(_objects, at, _objects, at + 1, _count - at);
-        _objects[at] = obj;
-        _count++;
-        if (_inUseTime && at <= _visitCursor)
-        {
-            _visitCursor++; // created from a callback before the visit in progress: visited from the next tick on
-        }
-
-        for (int k = at; k < _count; k++)
-        {
-            _objects[k].WorldIndex = k;
-        }
-
+        // Kept in ascending id order (equal ids: creation order) so that a tick visits objects in the same order whatever the
+        // order of creation. Retail walks its hash table; any fixed order is as retail-like as another. O(log n) in any order.
+        var obj = new PhysicsObj(this, id, _created++);
+        _objects.Insert(obj);
+        obj.InWorld = true;
         obj.Touch();
         if (id != 0)
         {
@@ -227,7 +205,7 @@ public sealed partial class PhysicsWorld
     public void RemoveObject(PhysicsObj obj)
     {
         ArgumentNullException.ThrowIfNull(obj);
-        if (obj.World != this || obj.WorldIndex < 0)
+        if (obj.World != this || !obj.InWorld)
         {
             throw new ArgumentException("The object is not in this world.", nameof(obj));
         }
@@ -238,21 +216,8 @@ public sealed partial class PhysicsWorld
         }
 
         Scene.RemoveFromVisiting(obj);
-        int i = obj.WorldIndex;
-        Array.Copy(_objects, i + 1, _objects, i, _count - i - 1);
-        _count--;
-        if (_inUseTime && i <= _visitCursor)
-        {
-            _visitCursor--; // the tick in progress goes on with the object that followed
-        }
-
-        _objects[_count] = null!;
-        for (int k = i; k < _count; k++)
-        {
-            _objects[k].WorldIndex = k;
-        }
-
-        obj.WorldIndex = -1;
+        _objects.Remove(obj);
+        obj.InWorld = false;
         obj.RemovedFromWorld = true;
         if (obj.Id != 0 && _byId.TryGetValue(obj.Id, out PhysicsObj? found) && found == obj)
         {
@@ -323,11 +288,11 @@ public sealed partial class PhysicsWorld
             {
                 PhysicsObj? player = _player;
                 int visits = 0;
-                // The cursor follows removals and creations from callbacks (RemoveObject, CreateObject), so each object is
-                // visited once.
-                for (_visitCursor = 0; _visitCursor < _count; _visitCursor++)
+                // The cursor finds its place again by key after a removal or creation from a callback, so each object in the
+                // list when the walk reaches it is visited once.
+                VisitOrderList.Cursor cursor = _objects.Start();
+                while (_objects.MoveNext(ref cursor, out PhysicsObj obj))
                 {
-                    PhysicsObj obj = _objects[_visitCursor];
                     obj.UpdateObject();
                     visits++;
                     if (obj == player)

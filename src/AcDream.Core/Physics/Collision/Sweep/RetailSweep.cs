@@ -82,7 +82,7 @@ public sealed class RetailSweep : CollisionSweep
 
         for (int i = 0; i < world.ObjectCount; i++)
         {
-            world.ObjectAt(i).RemoveShadowsFromCells();
+            world.GetObject(i).RemoveShadowsFromCells();
         }
 
         switch (Cells)

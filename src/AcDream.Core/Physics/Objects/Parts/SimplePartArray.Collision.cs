@@ -10,8 +10,8 @@ namespace AcDream.Core.Physics.Objects.Parts;
 public sealed partial class SimplePartArray : IPartCollision
 {
     private CylSphere[] _cylSpheres = Array.Empty<CylSphere>();
-    private PhysicsPart[] _physicsParts = Array.Empty<PhysicsPart>();
-    private Frame[] _partFrames = Array.Empty<Frame>();
+    // The parts with a physics BSP and their local frames, null until SetPhysicsParts (most objects have none).
+    private BspParts? _bspParts;
 
     /// <inheritdoc />
     public ReadOnlySpan<CylSphere> CylSpheres => _cylSpheres;
@@ -22,7 +22,7 @@ public sealed partial class SimplePartArray : IPartCollision
 
     /// <inheritdoc />
     /// <remarks>The parts given to <see cref="SetPhysicsParts"/> (none by default).</remarks>
-    public int NumCollisionParts => _physicsParts.Length;
+    public int NumCollisionParts => _bspParts?.Parts.Length ?? 0;
 
     /// <summary>
     /// Gives the object parts with a physics BSP: each part's graphics-object physics, its frame relative to the object and
@@ -43,8 +43,7 @@ public sealed partial class SimplePartArray : IPartCollision
             parts[i] = new PhysicsPart(gfxObjs[i], new Position(CellId, Frame.Combined(Frame, localFrames[i])), scales[i]);
         }
 
-        _physicsParts = parts;
-        _partFrames = localFrames.ToArray();
+        _bspParts = new BspParts(parts, localFrames.ToArray());
     }
 
     /// <summary>Replaces the cylinder spheres (a setup's list; object-local, unscaled).</summary>
@@ -101,13 +100,16 @@ public sealed partial class SimplePartArray : IPartCollision
     TransitionState IPartCollision.FindPartObjCollisions(int index, Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
-        if ((uint)index >= (uint)_physicsParts.Length)
+        BspParts? bsp = _bspParts;
+        if (bsp is null || (uint)index >= (uint)bsp.Parts.Length)
         {
             return TransitionState.Ok;
         }
 
-        PhysicsPart part = _physicsParts[index];
-        part.SetPosition(new Position(CellId, Frame.Combined(Frame, _partFrames[index])));
+        PhysicsPart part = bsp.Parts[index];
+        part.SetPosition(new Position(CellId, Frame.Combined(Frame, bsp.Frames[index])));
         return part.FindObjCollisions(transition);
     }
+
+    private sealed record BspParts(PhysicsPart[] Parts, Frame[] Frames);
 }

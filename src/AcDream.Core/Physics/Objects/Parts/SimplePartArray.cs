@@ -12,9 +12,10 @@ namespace AcDream.Core.Physics.Objects.Parts;
 /// </summary>
 public sealed partial class SimplePartArray : IPartArray
 {
-    private readonly float[] _partTranslucency;
-    private readonly float[] _partLuminosity;
-    private readonly float[] _partDiffusion;
+    // The visual values last applied to each part, three per part (translucency, luminosity, diffusion) in one array, so
+    // that a part array keeps one array for them rather than three.
+    private const int Translucency0 = 0, Luminosity0 = 1, Diffusion0 = 2, PartValues = 3;
+    private readonly float[] _partValues;
     private Frame _frame = Frame.Identity;
     private Sphere[] _spheres;
 
@@ -28,9 +29,7 @@ public sealed partial class SimplePartArray : IPartArray
         _spheres = new Sphere[numSpheres];
         Array.Fill(_spheres, Sphere.Dummy);
         UpdateObstacleReach();
-        _partTranslucency = new float[numParts];
-        _partLuminosity = new float[numParts];
-        _partDiffusion = new float[numParts];
+        _partValues = new float[numParts * PartValues];
     }
 
     /// <inheritdoc />
@@ -181,13 +180,13 @@ public sealed partial class SimplePartArray : IPartArray
     public int HandleMovementCount { get; private set; }
 
     /// <summary>Translucency last applied to part <paramref name="part"/> (0 when out of range).</summary>
-    public float GetPartTranslucency(uint part) => part < (uint)NumParts ? _partTranslucency[part] : 0f;
+    public float GetPartTranslucency(uint part) => part < (uint)NumParts ? _partValues[(part * PartValues) + Translucency0] : 0f;
 
     /// <summary>Luminosity last applied to part <paramref name="part"/> (0 when out of range).</summary>
-    public float GetPartLuminosity(uint part) => part < (uint)NumParts ? _partLuminosity[part] : 0f;
+    public float GetPartLuminosity(uint part) => part < (uint)NumParts ? _partValues[(part * PartValues) + Luminosity0] : 0f;
 
     /// <summary>Diffusion last applied to part <paramref name="part"/> (0 when out of range).</summary>
-    public float GetPartDiffusion(uint part) => part < (uint)NumParts ? _partDiffusion[part] : 0f;
+    public float GetPartDiffusion(uint part) => part < (uint)NumParts ? _partValues[(part * PartValues) + Diffusion0] : 0f;
 
     /// <inheritdoc />
     // retail: CSequence::apply_physics (acclient.c:339859), reached from CSequence::update with an empty anim list
@@ -267,7 +266,7 @@ public sealed partial class SimplePartArray : IPartArray
     {
         Finite(translucency);
         Translucency = translucency;
-        Array.Fill(_partTranslucency, translucency);
+        FillParts(Translucency0, translucency);
     }
 
     /// <inheritdoc />
@@ -277,7 +276,7 @@ public sealed partial class SimplePartArray : IPartArray
         Finite(translucency);
         if (part < (uint)NumParts)
         {
-            _partTranslucency[part] = translucency;
+            _partValues[(part * PartValues) + Translucency0] = translucency;
         }
     }
 
@@ -287,7 +286,7 @@ public sealed partial class SimplePartArray : IPartArray
     {
         Finite(luminosity);
         Luminosity = luminosity;
-        Array.Fill(_partLuminosity, luminosity);
+        FillParts(Luminosity0, luminosity);
     }
 
     /// <inheritdoc />
@@ -297,7 +296,7 @@ public sealed partial class SimplePartArray : IPartArray
         Finite(luminosity);
         if (part < (uint)NumParts)
         {
-            _partLuminosity[part] = luminosity;
+            _partValues[(part * PartValues) + Luminosity0] = luminosity;
         }
     }
 
@@ -307,7 +306,7 @@ public sealed partial class SimplePartArray : IPartArray
     {
         Finite(diffusion);
         Diffusion = diffusion;
-        Array.Fill(_partDiffusion, diffusion);
+        FillParts(Diffusion0, diffusion);
     }
 
     /// <inheritdoc />
@@ -317,7 +316,16 @@ public sealed partial class SimplePartArray : IPartArray
         Finite(diffusion);
         if (part < (uint)NumParts)
         {
-            _partDiffusion[part] = diffusion;
+            _partValues[(part * PartValues) + Diffusion0] = diffusion;
+        }
+    }
+
+    // Sets value `channel` of every part.
+    private void FillParts(int channel, float value)
+    {
+        for (int i = channel; i < _partValues.Length; i += PartValues)
+        {
+            _partValues[i] = value;
         }
     }
 }
