@@ -17,16 +17,23 @@ public sealed partial class PhysicsObj
     /// <paramref name="partIndex"/> (the parent's own frame when the part does not exist). The child leaves the world
     /// simulation: update_object skips parented objects.
     /// </summary>
-    /// <exception cref="ArgumentException">The parent is this object, belongs to another world, or the frame is invalid.</exception>
+    /// <param name="parent">The parent: an object of the same world, not this one.</param>
+    /// <param name="partIndex">The parent's part (any value; a missing part means the parent's own frame).</param>
+    /// <param name="frame">The offset from the parent: a unit quaternion and each origin component within
+    /// ±<see cref="InputLimits.MaxChildOffset"/> (192 m).</param>
+    /// <exception cref="ArgumentException">The parent is this object, belongs to another world, or the frame is outside that
+    /// domain (state unchanged).</exception>
     // retail: CPhysicsObj::set_parent (acclient.c:323002), simplified: no shadow cells
     public bool SetParent(PhysicsObj parent, uint partIndex, in Frame frame)
     {
-        Touch();
         ArgumentNullException.ThrowIfNull(parent);
-        if (parent == this || parent.World != World || !frame.IsValid() || !VectorMath.IsFinite(frame.Origin))
+        // non-retail: the child frame's domain (InputLimits.MaxChildOffset, unit quaternion)
+        if (parent == this || parent.World != World || !InputLimits.IsChildFrameInDomain(frame))
         {
             throw new ArgumentException("Invalid parent or frame.", nameof(parent));
         }
+
+        Touch();
 
         parent.Touch();
         parent.Children ??= new ChildList();
@@ -89,7 +96,7 @@ public sealed partial class PhysicsObj
         Frame basis = parts is not null && partIndex < (uint)parts.NumParts ? parts.GetPartFrame((int)partIndex) : _position.Frame;
         Frame f = basis;
         f.Combine(basis, childFrame);
-        child.SetFrame(f);
+        child.SetFrameInternal(f);
         child.ParticleManager?.UpdateParticles();
         child.ScriptManager?.UpdateScripts();
     }

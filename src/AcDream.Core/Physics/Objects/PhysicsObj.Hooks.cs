@@ -87,12 +87,17 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Applies one interpolated hook value to the object or its parts.</summary>
-    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="ArgumentException">The value is NaN or infinite, or a scale outside [0.01, 100] (state unchanged).</exception>
     // retail: CPhysicsObj::process_fp_hook (acclient.c:320571)
     internal void ProcessFPHook(PhysicsHookType type, float value, uint userData)
     {
-        Touch();
         ThrowIfNotFinite(value, 0.0);
+        if (type == PhysicsHookType.Scale)
+        {
+            InputLimits.ThrowIfScaleOutside(value, nameof(value));
+        }
+
+        Touch();
         switch (type)
         {
             case PhysicsHookType.Scale:
@@ -126,12 +131,18 @@ public sealed partial class PhysicsObj
 
     /// <summary>Scales the object to <paramref name="scale"/> now, or over <paramref name="delta"/> seconds of physics clock
     /// when delta &gt;= EPSILON.</summary>
-    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    /// <param name="scale">The target scale: in [<see cref="InputLimits.MinScale"/>, <see cref="InputLimits.MaxScale"/>] =
+    /// [0.01, 100] (a fade passes only through values between the current scale and this one).</param>
+    /// <param name="delta">Fade duration, seconds: finite (below EPSILON: at once).</param>
+    /// <exception cref="ArgumentException">The scale is outside [0.01, 100] (also NaN, ±∞, 0, negative) or the duration is
+    /// not finite (state unchanged; retail accepts any).</exception>
     // retail: CPhysicsObj::SetScale (acclient.c:320621)
     public void SetScale(float scale, double delta)
     {
-        Touch();
         ThrowIfNotFinite(scale, delta);
+        // non-retail: the scale's domain (a non-positive scale made every later sweep throw)
+        InputLimits.ThrowIfScaleOutside(scale, nameof(scale));
+        Touch();
         if (delta >= PhysicsGlobals.Epsilon)
         {
             AddFPHook(PhysicsHookType.Scale, delta, Scale, scale, 0);
@@ -143,14 +154,16 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Sets the scale at once (retail <c>SetScaleStatic</c>).</summary>
-    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <param name="scale">The scale: in [<see cref="InputLimits.MinScale"/>, <see cref="InputLimits.MaxScale"/>] = [0.01, 100].</param>
+    /// <exception cref="ArgumentException">The scale is outside [0.01, 100] (also NaN, ±∞, 0, negative); state unchanged.</exception>
     // retail: CPhysicsObj::SetScaleStatic (acclient.c:319007)
     public void SetScaleStatic(float scale)
     {
+        // non-retail: the scale's domain (a non-positive scale made every later sweep throw)
+        InputLimits.ThrowIfScaleOutside(scale, nameof(scale));
         Touch();
-        ThrowIfNotFinite(scale, 0.0);
-        Scale = scale;
         PartArray?.SetScale(scale);
+        Scale = scale;
     }
 
     /// <summary>Fades the translucency from 0 to <paramref name="translucency"/> over <paramref name="delta"/> seconds (retail

@@ -32,15 +32,16 @@ public sealed partial class PhysicsObj
     /// otherwise, only with contact, an object at least 96 m from the player snaps there and a nearer one interpolates.
     /// </summary>
     /// <returns>True when the position was used.</returns>
-    /// <exception cref="ArgumentException">The frame is not valid; state unchanged.</exception>
+    /// <param name="p">The reported position: the position domain of <see cref="StorePosition"/> (unit quaternion; origin
+    /// within ±65,536 m, outdoor x, y in [−192, 384]).</param>
+    /// <param name="teleportTimestamp">The report's 16-bit teleport timestamp (any value; wrap-around order).</param>
+    /// <param name="contact">The report says the object is on the ground.</param>
+    /// <exception cref="ArgumentException">The position is outside that domain; state unchanged.</exception>
     // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450)
     public bool MoveOrTeleport(in Position p, ushort teleportTimestamp, bool contact)
     {
+        InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
-        if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
-        {
-            throw new ArgumentException("Position frame must be valid.", nameof(p));
-        }
 
         ushort stored = _updateTimes[(int)PhysicsTimeStamp.Teleport];
         bool older = System.Math.Abs(stored - teleportTimestamp) > 0x7FFF ? stored < teleportTimestamp : teleportTimestamp < stored;

@@ -16,12 +16,14 @@ public sealed partial class PhysicsObj
     /// </summary>
     /// <remarks>SmartBox's parent and placement-frame handling (unset_parent, SetPlacementFrame) and its error counter are
     /// the client's concern and not ported here.</remarks>
-    /// <param name="p">Reported position.</param>
+    /// <param name="p">Reported position: unit quaternion; origin within ±<see cref="InputLimits.MaxCoordinate"/>, outdoor x, y
+    /// in [−192, 384] (<see cref="InputLimits.OutdoorMargin"/>).</param>
     /// <param name="positionTimestamp">The report's 16-bit position timestamp (POSITION_TS).</param>
     /// <param name="teleportTimestamp">The report's 16-bit teleport timestamp (TELEPORT_TS).</param>
     /// <param name="hasContact">The report says the object is on the ground.</param>
     /// <returns>True when the report moved, queued or placed the object.</returns>
-    /// <exception cref="ArgumentException"><paramref name="p"/> has a non-finite origin or an invalid rotation; nothing changes.</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is outside the position domain of <see cref="StorePosition"/>
+    /// (invalid rotation; origin not finite, beyond ±65,536 m, or outdoor x, y outside [−192, 384]); nothing changes.</exception>
     // retail: SmartBox::HandleReceivedPosition (acclient.c:145124)
     public bool HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)
     {
@@ -52,7 +54,12 @@ public sealed partial class PhysicsObj
         }
 
         // acclient.c:145227: re-arm the leash at the object's own position.
-        ConstrainTo(_position, (float)GetStartConstraintDistance(), (float)GetMaxConstraintDistance());
+        // non-retail: an own position outside the input domain (retail's zeroed quaternion, a free-space drift beyond
+        // ±65,536 m) skips the re-arm instead of refusing after the move
+        if (InputLimits.IsPositionInDomain(_position))
+        {
+            ConstrainTo(_position, (float)GetStartConstraintDistance(), (float)GetMaxConstraintDistance());
+        }
         return true;
     }
 

@@ -87,7 +87,7 @@ public sealed partial class PhysicsObj
                 if (VectorMath.AreEqual(newPos.Frame.Origin, _position.Frame.Origin, PhysicsGlobals.Epsilon))
                 {
                     newPos.Frame.Origin = _position.Frame.Origin;
-                    SetFrame(newPos.Frame);
+                    SetFrameInternal(newPos.Frame);
                     CachedVelocity = Vector3.Zero;
                 }
                 else
@@ -110,12 +110,12 @@ public sealed partial class PhysicsObj
                     {
                         Vector3 offset = _position.GetOffset(_transitionScratch.CurrentPosition);
                         CachedVelocity = DivideByQuantum(offset, quantum);
-                        CommitTransition(_transitionScratch);
+                        CommitTransitionInternal(_transitionScratch);
                     }
                     else
                     {
                         newPos.Frame.Origin = _position.Frame.Origin;
-                        SetFrame(newPos.Frame);
+                        SetFrameInternal(newPos.Frame);
                         CachedVelocity = Vector3.Zero;
                     }
                 }
@@ -129,7 +129,7 @@ public sealed partial class PhysicsObj
                 }
 
                 newPos.Frame.Origin = _position.Frame.Origin;
-                SetFrame(newPos.Frame);
+                SetFrameInternal(newPos.Frame);
                 CachedVelocity = Vector3.Zero;
             }
 

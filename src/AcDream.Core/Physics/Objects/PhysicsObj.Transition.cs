@@ -86,7 +86,7 @@ public sealed partial class PhysicsObj
             ObjCell? cell = AdjustPosition(sweep, ref p, t.SpherePath.LocalSphere[0].Center);
             if (cell is null)
             {
-                GoToLostCell(p);
+                GoToLostCellInternal(p);
                 return SetPositionError.Ok;
             }
 
@@ -109,7 +109,7 @@ public sealed partial class PhysicsObj
             var result = default(TransitionResult);
             RetailSweep.Fill(t, ref result);
             sweep.LastTransition = t;
-            CommitTransition(result);
+            CommitTransitionInternal(result);
             return SetPositionError.Ok;
         }
         finally
