@@ -128,6 +128,19 @@ public static class InputLimits
     /// <summary>True when <paramref name="time"/> is a clock time in (−<see cref="MaxClockTime"/>, <see cref="MaxClockTime"/>).</summary>
     internal static bool IsClockTimeInDomain(double time) => System.Math.Abs(time) < MaxClockTime;
 
+    /// <summary>True when <paramref name="n"/> is finite and, when <paramref name="valid"/>, of unit length (|n|² within
+    /// 5 × EPSILON of 1, the tolerance of <see cref="Frame.IsValid"/>).</summary>
+    internal static bool IsNormalInDomain(Vector3 n, bool valid)
+    {
+        if (!IsFinite(n))
+        {
+            return false;
+        }
+
+        double m = (double)n.X * n.X + (double)n.Y * n.Y + (double)n.Z * n.Z;
+        return !valid || System.Math.Abs(m - 1.0) <= PhysicsGlobals.Epsilon * 5.0;
+    }
+
     /// <summary>True when every component is finite.</summary>
     internal static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 }

@@ -342,11 +342,13 @@ public sealed partial class PhysicsObj
         _animHookCount = 0;
     }
 
+    // non-retail: a fade's duration is a span of the physics clock, so it has the clock's domain (|delta| < 2^40 s); a
+    // longer one overflowed the float duration of CallPES's random delay to infinity
     private static void ThrowIfNotFinite(float value, double delta)
     {
-        if (!float.IsFinite(value) || !double.IsFinite(delta))
+        if (!float.IsFinite(value) || !InputLimits.IsClockTimeInDomain(delta))
         {
-            throw new ArgumentException("Hook values and durations must be finite.");
+            throw new ArgumentException("Hook values must be finite and durations within ±2^40 s.");
         }
     }
 }

@@ -8,7 +8,11 @@ public sealed partial class PhysicsObj
     private readonly ushort[] _updateTimes = new ushort[9];
 
     /// <summary>Last accepted 16-bit timestamp of <paramref name="stamp"/> (retail <c>update_times</c>).</summary>
-    public ushort GetUpdateTime(PhysicsTimeStamp stamp) => _updateTimes[(int)stamp];
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="stamp"/> is not a defined stamp.</exception>
+    public ushort GetUpdateTime(PhysicsTimeStamp stamp) => _updateTimes[StampIndex(stamp)];
+
+    private int StampIndex(PhysicsTimeStamp stamp) =>
+        (uint)stamp < (uint)_updateTimes.Length ? (int)stamp : throw new ArgumentOutOfRangeException(nameof(stamp));
 
     /// <summary>
     /// True when <paramref name="newTime"/> is newer than the stored stamp in 16-bit wrap-around order (a difference above
@@ -17,7 +21,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::newer_event (acclient.c:143014)
     public bool NewerEvent(PhysicsTimeStamp stamp, ushort newTime)
     {
-        ushort old = _updateTimes[(int)stamp];
+        ushort old = _updateTimes[StampIndex(stamp)];
         bool newer = System.Math.Abs(newTime - old) > 0x7FFF ? newTime < old : old < newTime;
         if (newer)
         {

@@ -192,16 +192,20 @@ public sealed partial class PhysicsObj
     /// A result with no cell sends the object to the lost cell.
     /// </summary>
     /// <param name="t">The result: <see cref="TransitionResult.CurrentPosition"/> in the domain of <see cref="StorePosition"/>,
-    /// finite contact-plane and sliding normals and a finite contact-plane distance (whether or not flagged valid).</param>
+    /// finite contact-plane and sliding normals, of unit length (|n|² within 5 × EPSILON of 1) when flagged valid, and a finite
+    /// contact-plane distance.</param>
     /// <exception cref="ArgumentException">The result is outside that domain (state unchanged; retail stores it).</exception>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
     public void CommitTransition(in TransitionResult t)
     {
         // non-retail: a client sweep's result is checked before anything changes
         InputLimits.ThrowIfOutside(t.CurrentPosition, nameof(t));
-        if (!InputLimits.IsFinite(t.ContactPlaneNormal) || !InputLimits.IsFinite(t.SlidingNormal) || !float.IsFinite(t.ContactPlaneD))
+        if (!InputLimits.IsNormalInDomain(t.ContactPlaneNormal, t.ContactPlaneValid)
+            || !InputLimits.IsNormalInDomain(t.SlidingNormal, t.SlidingNormalValid) || !float.IsFinite(t.ContactPlaneD))
         {
-            throw new ArgumentException("Contact-plane and sliding normals and the plane distance must be finite.", nameof(t));
+            throw new ArgumentException(
+                "Contact-plane and sliding normals must be finite (unit length when flagged valid) and the plane distance finite.",
+                nameof(t));
         }
 
         CommitTransitionInternal(t);

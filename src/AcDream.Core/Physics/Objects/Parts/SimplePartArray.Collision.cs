@@ -17,8 +17,24 @@ public sealed partial class SimplePartArray : IPartCollision
     public ReadOnlySpan<CylSphere> CylSpheres => _cylSpheres;
 
     /// <inheritdoc />
-    /// <remarks>Default <see cref="Sphere.Dummy"/>.</remarks>
-    public Sphere SortingSphere { get; set; } = Sphere.Dummy;
+    /// <remarks>Default <see cref="Sphere.Dummy"/>. Valid domain: a finite centre and a positive finite radius.</remarks>
+    /// <exception cref="ArgumentException">The centre is not finite or the radius not positive and finite (state unchanged).</exception>
+    public Sphere SortingSphere
+    {
+        get => _sortingSphere;
+        set
+        {
+            if (!VectorMath.IsFinite(value.Center) || !float.IsFinite(value.Radius) || !(value.Radius > 0f))
+            {
+                throw new ArgumentException("The sorting sphere needs a finite centre and a positive finite radius.", nameof(value));
+            }
+
+            Owner?.Touch();
+            _sortingSphere = value;
+        }
+    }
+
+    private Sphere _sortingSphere = Sphere.Dummy;
 
     /// <inheritdoc />
     /// <remarks>The parts given to <see cref="SetPhysicsParts"/> (none by default).</remarks>
