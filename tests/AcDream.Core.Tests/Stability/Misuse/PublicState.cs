@@ -17,14 +17,9 @@ internal sealed class PublicState
 {
     private static readonly Assembly Library = typeof(PhysicsWorld).Assembly;
 
-    /// <summary>Public members not read, each with its reason.</summary>
-    private static readonly HashSet<string> NotRead =
-    [
-        // The wake rule (PhysicsObj.Touch): any call on an object (even one refused) may wake it; waking is bit-identical
-        // (docs/scene.md) and shows only here and in the visit count, which are the scene's bookkeeping, not physics state.
-        "IsDormant",
-        "LastTickVisitCount",
-    ];
+    /// <summary>Public members not read, each with its reason (none today: a refused call leaves even the scene's
+    /// bookkeeping, IsDormant and LastTickVisitCount, as it was).</summary>
+    private static readonly HashSet<string> NotRead = [];
 
     private readonly Dictionary<object, string> _seen = new(ReferenceEqualityComparer.Instance);
 
