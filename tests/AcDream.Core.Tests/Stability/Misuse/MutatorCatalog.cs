@@ -49,6 +49,12 @@ internal static class MutatorCatalog
         ["TerrainWorld.AddLandBlock(LandBlock)"] = "issue #15 item 7 (structural helper): landblocks changing under objects",
         ["TerrainWorld.RemoveLandBlock(UInt32)"] = "issue #15 item 7 (structural helper): landblocks changing under objects",
         ["PhysicsWorld.set_Sweep(CollisionSweep)"] = "issue #15 item 13 (structural helper): TerrainWorld release on detach",
+        // Span parameters cannot be passed through reflection: each is called directly by the test named.
+        ["SimplePartArray.SetSpheres(ReadOnlySpan`1)"] = "span: SpanInputsTests.SetSpheres_BadSphere",
+        ["SimplePartArray.SetCylSpheres(ReadOnlySpan`1)"] = "span: SpanInputsTests.SetCylSpheres_BadCylinder",
+        ["SimplePartArray.SetPhysicsParts(ReadOnlySpan`1, ReadOnlySpan`1, ReadOnlySpan`1)"] = "span: SpanInputsTests.SetPhysicsParts_BadFrameOrScale_IsRefused",
+        ["TerrainWorld.AddLandBlock(UInt32, ReadOnlySpan`1, ReadOnlySpan`1)"] = "span, and issue #15 item 7 (structural helper)",
+        ["TerrainWorld.FindCellList(Position, ReadOnlySpan`1, ReadOnlySpan`1, Span`1, LandCell)"] = "span query: TerrainQueryStabilityTests, LandblockCornerOnTerrainTests",
     };
 
     private static readonly Assembly Library = typeof(PhysicsWorld).Assembly;

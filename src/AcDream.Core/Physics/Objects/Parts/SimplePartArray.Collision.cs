@@ -45,12 +45,27 @@ public sealed partial class SimplePartArray : IPartCollision
     /// its scale. The object also needs <see cref="PhysicsState.HasPhysicsBsp"/> for sweeps to test them (retail
     /// <c>CPartArray::CacheHasPhysicsBSP</c>).
     /// </summary>
-    /// <exception cref="ArgumentException">The spans differ in length, or a frame or scale is not valid.</exception>
+    /// <param name="gfxObjs">The parts' graphics-object physics.</param>
+    /// <param name="localFrames">Each part's frame relative to the object: a unit quaternion, each origin component within
+    /// ±<see cref="InputLimits.MaxChildOffset"/> (192 m).</param>
+    /// <param name="scales">Each part's scale: components in [<see cref="InputLimits.MinScale"/>,
+    /// <see cref="InputLimits.MaxScale"/>] = [0.01, 100].</param>
+    /// <exception cref="ArgumentException">The spans differ in length, or a frame or scale is outside its domain (state
+    /// unchanged).</exception>
     public void SetPhysicsParts(ReadOnlySpan<GfxObjPhysics> gfxObjs, ReadOnlySpan<Frame> localFrames, ReadOnlySpan<System.Numerics.Vector3> scales)
     {
         if (gfxObjs.Length != localFrames.Length || gfxObjs.Length != scales.Length)
         {
             throw new ArgumentException("One frame and one scale per part.", nameof(localFrames));
+        }
+
+        for (int i = 0; i < localFrames.Length; i++)
+        {
+            // non-retail: a part's offset has the child frame's domain
+            if (!InputLimits.IsChildFrameInDomain(localFrames[i]))
+            {
+                throw new ArgumentException("Part frames need a unit quaternion and an offset within ±192 m.", nameof(localFrames));
+            }
         }
 
         var parts = new PhysicsPart[gfxObjs.Length];
