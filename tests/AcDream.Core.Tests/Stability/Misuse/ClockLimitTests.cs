@@ -48,7 +48,8 @@ public class ClockLimitTests
         // (1/30 s = 273.07 spacings) = 0.0333252 s, just below the 1/30 s gate (0.0333333 s), so the world refuses it; the next
         // tick has 546 spacings = 0.0666504 s and runs. 20 ticks of 1/30 s give 10 world updates, each stepping the object
         // once (EPSILON < dt <= MaxQuantum): the clock still resolves the tick, though coarsely (retail arithmetic).
-        // (Every object visited: the scene ticker's dormancy is not what this test is about.)
+        // (Every object visited: the object comes to rest on the floor by friction after 9 steps, and the scene would then skip
+        // its inactive visit as dormant, unseen by the step observer.)
         double t0 = Limit - 1.0;
         var world = new PhysicsWorld(t0) { Sweep = new FlatGroundSweep(), VisitEveryObject = true };
         var steps = new StepRecorder();
