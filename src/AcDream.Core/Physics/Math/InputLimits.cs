@@ -46,6 +46,13 @@ public static class InputLimits
     /// <c>UpdatePhysicsInternal</c>.</summary>
     public const float MaxSequenceSpeed = PhysicsGlobals.MaxVelocity;
 
+    /// <summary>
+    /// Largest magnitude of an acceleration set directly, m/s²: 1,000 (about 100 g; gravity is 9.8). With the 50 m/s velocity
+    /// clamp at the start of every step, one step of at most 0.2 s then ends below 50 + 1,000 × 0.2 = 250 m/s and moves the
+    /// object at most 50 × 0.2 + 1,000 × 0.2² / 2 = 30 m: within <see cref="OutdoorMargin"/>.
+    /// </summary>
+    public const float MaxAcceleration = 1000f;
+
     /// <summary>True when <paramref name="cellId"/>'s low word is an outdoor cell (1..0x40) or the landblock (0xFFFF): the
     /// ids <c>store_position</c> re-homes to the outdoor cell under the origin.</summary>
     internal static bool IsOutdoorOrBlock(uint cellId)

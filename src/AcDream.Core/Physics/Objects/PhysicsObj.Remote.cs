@@ -79,10 +79,11 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>
-    /// Sticks to object <paramref name="objectId"/> (its top-level parent when attached), with that object's radius; does
-    /// nothing when the world has no such object.
+    /// Sticks to object <paramref name="objectId"/> (its top-level parent when attached), with that object's radius. As
+    /// retail, the position manager is created (and the object activated) first, also when the world has no such object;
+    /// then nothing else happens.
     /// </summary>
-    /// <param name="objectId">Target id.</param>
+    /// <param name="objectId">Target id: any value (an id the world does not hold sticks to nothing).</param>
     // retail: CPhysicsObj::stick_to_object (acclient.c:319724)
     public void StickToObject(uint objectId)
     {

@@ -292,10 +292,20 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Sets the acceleration directly (retail <c>set_description</c> writes it); normally <see cref="CalcAcceleration"/> does.</summary>
-    /// <exception cref="ArgumentException">A component is NaN or infinite.</exception>
+    /// <param name="acceleration">m/s² in world axes: finite, magnitude at most <see cref="InputLimits.MaxAcceleration"/>
+    /// (1,000 m/s²).</param>
+    /// <exception cref="ArgumentException">A component is NaN or infinite, or the magnitude exceeds 1,000 m/s² (state
+    /// unchanged).</exception>
     public void SetAcceleration(Vector3 acceleration)
     {
         ThrowIfNotFinite(acceleration, nameof(acceleration));
+        // non-retail: the acceleration's bound (1e30 m/s² swept an object 1e28 m in one step)
+        if ((double)acceleration.X * acceleration.X + (double)acceleration.Y * acceleration.Y
+            + (double)acceleration.Z * acceleration.Z > (double)InputLimits.MaxAcceleration * InputLimits.MaxAcceleration)
+        {
+            throw new ArgumentException("Acceleration must not exceed 1,000 m/s².", nameof(acceleration));
+        }
+
         Touch();
         _acceleration = acceleration;
     }

@@ -26,6 +26,9 @@ public class InputLimitsConstantsTests
         // 50 m/s = 0x42480000 (1.5625 × 2^5), retail's max velocity.
         Assert.Equal(50f, InputLimits.MaxSequenceSpeed);
         Assert.Equal(0x42480000, BitConverter.SingleToInt32Bits(InputLimits.MaxSequenceSpeed));
+        // 1,000 m/s² = 0x447A0000 (1.953125 × 2^9).
+        Assert.Equal(1000f, InputLimits.MaxAcceleration);
+        Assert.Equal(0x447A0000, BitConverter.SingleToInt32Bits(InputLimits.MaxAcceleration));
         Assert.Equal(65536, ObjCell.MaxShadowCapacity);
     }
 }

@@ -85,4 +85,32 @@ public class VelocityBoundTests
     }
 
     private static float BitIncrement(float f) => MathF.BitIncrement(f);
+
+    [Fact]
+    public void Acceleration_AboveTheBound_IsRefused_AtTheBound_KeepsTheVelocityBounded()
+    {
+        // InputLimits.MaxAcceleration = 1,000 m/s². 1e30 m/s² swept an object 1e28 m in one step (into the lost cell).
+        var s = new MisuseScene();
+        PhysicsObj o = s.Other;
+        PublicState before = PublicState.Capture(s);
+        Assert.Throws<ArgumentException>(() => o.SetAcceleration(new Vector3(1e30f, 0f, 0f)));
+        Assert.Throws<ArgumentException>(() => o.SetAcceleration(new Vector3(0f, MathF.BitIncrement(1000f), 0f)));
+        Assert.Empty(PublicState.Diff(before, PublicState.Capture(s)));
+
+        // Airborne at 5 m above the ground with 1,000 m/s² east: every step starts with the velocity clamped to 50 m/s
+        // (UpdatePhysicsInternal) and adds a × q = 1,000 × 0.05 = 50 m/s, so |v| ≤ 100 m/s (plus float rounding, 1e-3) and
+        // one tick moves it at most 50 × 0.05 + 1,000 × 0.05² / 2 = 3.75 m; 10 ticks stay inside the landblock.
+        Position p = MisuseScene.At(103f, 100f);
+        p.Frame.Origin = p.Frame.Origin with { Z = 15f };
+        o.SetPositionSimple(p, true);
+        o.SetAcceleration(new Vector3(1000f, 0f, 0f));
+        for (int i = 0; i < 10; i++)
+        {
+            Vector3 from = o.Position.Frame.Origin;
+            s.Tick(1);
+            Assert.True(o.Velocity.Length() <= 100f + 1e-3f, $"tick {i}: |v| = {o.Velocity.Length()}");
+            Assert.True((o.Position.Frame.Origin - from).Length() <= 3.75f + 1e-3f, $"tick {i}: moved {o.Position.Frame.Origin - from}");
+            Assert.True(CellContains(o.CellId, o.Position.Frame.Origin), $"tick {i}: cell {o.CellId:X8} at {o.Position.Frame.Origin}");
+        }
+    }
 }
