@@ -20,12 +20,13 @@ public sealed partial class PhysicsObj
     /// <exception cref="ArgumentException">The hook already belongs to an object.</exception>
     public void AddHook(PhysicsObjHook hook)
     {
-        Touch();
         ArgumentNullException.ThrowIfNull(hook);
         if (hook.Owner is not null)
         {
             throw new ArgumentException("The hook already belongs to an object.", nameof(hook));
         }
+
+        Touch();
 
         hook.Owner = this;
         hook.Prev = null;
@@ -43,8 +44,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::add_anim_hook (acclient.c:322062)
     public void AddAnimHook(IAnimHook hook)
     {
-        Touch();
         ArgumentNullException.ThrowIfNull(hook);
+        Touch();
         if (_animHookCount == _animHooks.Length)
         {
             Array.Resize(ref _animHooks, _animHooks.Length == 0 ? 8 : _animHooks.Length * 2);
@@ -172,8 +173,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetTranslucency (acclient.c:318693)
     public void SetTranslucency(float translucency, double delta)
     {
-        Touch();
         ThrowIfNotFinite(translucency, delta);
+        Touch();
         if (delta >= PhysicsGlobals.Epsilon)
         {
             AddFPHook(PhysicsHookType.Translucency, delta, 0.0f, translucency, 0);
@@ -189,9 +190,9 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetTranslucency2 (acclient.c:316920)
     public void SetTranslucency2(float start, float end, double delta)
     {
-        Touch();
         ThrowIfNotFinite(start, delta);
         ThrowIfNotFinite(end, delta);
+        Touch();
         if (delta >= PhysicsGlobals.Epsilon)
         {
             AddFPHook(PhysicsHookType.Translucency, delta, start, end, 0);
@@ -207,8 +208,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetTranslucencyInternal (acclient.c:316802)
     internal void SetTranslucencyInternal(float translucency)
     {
-        Touch();
         ThrowIfNotFinite(translucency, 0.0);
+        Touch();
         float t = translucency < (double)_translucencyOriginal ? _translucencyOriginal : translucency;
         Translucency = t;
         PartArray?.SetTranslucency(t);
@@ -252,8 +253,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::CallPES (acclient.c:318972)
     public void CallPes(uint scriptId, double delta)
     {
-        Touch();
         ThrowIfNotFinite(0f, delta);
+        Touch();
         if (delta >= PhysicsGlobals.Epsilon)
         {
             float upper = (float)delta;

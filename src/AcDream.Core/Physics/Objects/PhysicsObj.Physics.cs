@@ -177,8 +177,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_velocity (acclient.c:318577)
     public void SetVelocity(Vector3 velocity)
     {
-        Touch();
         ThrowIfNotFinite(velocity, nameof(velocity));
+        Touch();
         if (velocity != _velocity)
         {
             Vector3 v = velocity;
@@ -208,8 +208,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_local_velocity (acclient.c:318617)
     public void SetLocalVelocity(Vector3 localVelocity)
     {
-        Touch();
         ThrowIfNotFinite(localVelocity, nameof(localVelocity));
+        Touch();
         SetVelocity(_position.Frame.LocalToGlobalVec(localVelocity));
     }
 
@@ -218,8 +218,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_omega (acclient.c:316612)
     public void SetOmega(Vector3 omega)
     {
-        Touch();
         ThrowIfNotFinite(omega, nameof(omega));
+        Touch();
         _omega = omega;
     }
 

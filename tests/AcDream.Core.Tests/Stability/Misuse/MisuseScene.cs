@@ -12,7 +12,7 @@ namespace AcDream.Core.Tests.Stability.Misuse;
 /// <summary>
 /// The misuse suite's small scene: flat terrain (landblock 0x8080 at height index 10, the one-metre table: z = 10 m), the retail
 /// sweep, a walker at (100, 100) (one 0.5 m sphere, a movement manager, walking 1 m/s, the player) with every position manager in
-/// use, a resting second object 3 m east, and a fade in progress. Built fresh for every case.
+/// use, a resting second object 3 m east, a dormant third object (no movement manager) 6 m west, and a fade in progress. Built fresh for every case.
 /// </summary>
 internal sealed class MisuseScene
 {
@@ -28,13 +28,16 @@ internal sealed class MisuseScene
         Walker = SweepScene.Walker(World, At(100f, 100f), id: 1);
         WalkerParts = (SimplePartArray)Walker.PartArray!;
         Other = SweepScene.Walker(World, At(103f, 100f), id: 2);
+        Resting = World.CreateObject(3);
+        Resting.PartArray = Support.Shared.Walkers.OneSphere();
+        Resting.EnterWorld(At(94f, 100f));
         World.Player = Walker;
         WalkerParts.SequenceVelocity = new Vector3(0f, 1f, 0f);
         Walker.SetTranslucency(0.5f, 1.0);
         Walker.InterpolateTo(At(100f, 102f), false);
         Walker.ConstrainTo(Walker.Position, 10f, 50f);
         Walker.PositionManager!.StickTo(2u, 0.5f, 1.8f);
-        Tick(2);
+        Tick(4);
     }
 
     public TerrainWorld Terrain { get; }
@@ -48,6 +51,9 @@ internal sealed class MisuseScene
     public SimplePartArray WalkerParts { get; }
 
     public PhysicsObj Other { get; }
+
+    /// <summary>A resting object with no movement manager, 6 m west of the walker: dormant once the scene has seen it idle.</summary>
+    public PhysicsObj Resting { get; }
 
     /// <summary>A position on the ground (z = 10 m) of landblock 0x8080 at (x, y), in the outdoor cell that contains it.</summary>
     public static Position At(float x, float y)

@@ -19,8 +19,9 @@ public class MisuseSuiteTests
     public static TheoryData<string> Members()
     {
         var data = new TheoryData<string>();
-        foreach (string n in MutatorCatalog.Discover(new MisuseScene()).Select(x => MutatorCatalog.Name(x.Method)).Distinct()
-                     .Where(n => !MutatorCatalog.Excluded.ContainsKey(n)).Order(StringComparer.Ordinal))
+        foreach (string n in MutatorCatalog.Discover(new MisuseScene()).Select(x => MutatorCatalog.Name(x.Method) + " on " + x.Path).Distinct()
+                     .Where(n => !MutatorCatalog.Excluded.ContainsKey(n[..n.IndexOf(" on ", StringComparison.Ordinal)]))
+                     .Order(StringComparer.Ordinal))
         {
             data.Add(n);
         }
@@ -32,7 +33,8 @@ public class MisuseSuiteTests
     [MemberData(nameof(Members))]
     public void BadValues_AreRefusedWithStateUnchanged_OrAccepted_AndTheWorldTicksOn(string member)
     {
-        (MethodInfo method, string path) = MutatorCatalog.Discover(new MisuseScene()).First(x => MutatorCatalog.Name(x.Method) == member);
+        (MethodInfo method, string path) = MutatorCatalog.Discover(new MisuseScene())
+            .First(x => MutatorCatalog.Name(x.Method) + " on " + x.Path == member);
         ParameterInfo[] ps = method.GetParameters();
         var failures = new List<string>();
         int cases = 0;
@@ -120,6 +122,7 @@ public class MisuseSuiteTests
     public void Catalog_FindsTheMutatorsOfEveryReachedType_AndEveryExclusionNamesAMember()
     {
         var s = new MisuseScene();
+        Assert.True(s.Resting.IsDormant, "the scene's resting object must be dormant for the no-wake cases");
         HashSet<string> names = MutatorCatalog.Discover(s).Select(x => MutatorCatalog.Name(x.Method)).ToHashSet();
         // A few members that must be reached (world, object, part array, managers, terrain):
         string[] expected =

@@ -95,6 +95,11 @@ internal static class MutatorCatalog
                 }
 
                 list.Add((m, path));
+                if (t == typeof(AcDream.Core.Physics.Objects.PhysicsObj))
+                {
+                    // The object's members are also called on the dormant object: a refusal must not even wake it.
+                    list.Add((m, "resting"));
+                }
             }
         }
 
@@ -104,6 +109,11 @@ internal static class MutatorCatalog
     /// <summary>The instance at <paramref name="path"/> in scene <paramref name="s"/>.</summary>
     public static object Resolve(MisuseScene s, string path)
     {
+        if (path == "resting")
+        {
+            return s.Resting;
+        }
+
         foreach ((object o, string p) in PublicState.Capture(s).Objects)
         {
             if (p == path)

@@ -49,6 +49,7 @@ internal sealed class PublicState
         // The scene's own objects, also when a call removed them from the world.
         st.Walk(s.Walker, "walker", 0);
         st.Walk(s.Other, "other", 0);
+        st.Walk(s.Resting, "resting", 0);
         st.Walk(s.Terrain, "terrain", 0);
         // The walker's landblock and land cell (reached through the terrain's queries, not its properties).
         st.Walk(s.Terrain.GetLandBlock(SweepScene.BlockX, SweepScene.BlockY), "block", 0);
