@@ -17,13 +17,17 @@ public sealed partial class PhysicsObj
     /// <paramref name="sweep"/>'s pool. Returns the transition (already given back to the pool, readable until the next
     /// sweep) or null when the sweep failed or all ten transitions were in use.
     /// </summary>
-    /// <exception cref="ArgumentException">A position has a NaN or infinite origin (nothing is changed).</exception>
+    /// <exception cref="ArgumentException">A position is outside the position domain (origin not finite, beyond ±65,536 m, or
+    /// outdoor x, y outside [−192, 384]; rotation not a unit quaternion); nothing is changed. The engine's own steps always
+    /// sweep inside it (a step moves an object at most 30 m from a re-homed origin, with a renormalised rotation).</exception>
     // retail: CPhysicsObj::transition (acclient.c:320060)
     internal Transition? RunTransition(RetailSweep sweep, in Position oldPos, in Position newPos, bool adminMove)
     {
-        if (!VectorMath.IsFinite(oldPos.Frame.Origin) || !VectorMath.IsFinite(newPos.Frame.Origin))
+        // non-retail: the position domain (a sweep towards 1e30 m took seconds and ended in an unloaded block's cell; an
+        // invalid rotation never ended)
+        if (!InputLimits.IsPositionInDomain(oldPos) || !InputLimits.IsPositionInDomain(newPos))
         {
-            throw new ArgumentException("Sweep positions must have finite origins.", nameof(newPos));
+            throw new ArgumentException("Sweep positions must lie in the position domain (InputLimits).", nameof(newPos));
         }
 
         Transition? t = sweep.Pool.Make();

@@ -108,4 +108,23 @@ public class PositionDomainTests
         Assert.Equal(0x82u, s.Walker.Position.ObjCellId >> 24);
         Assert.Equal(0f, s.Walker.Position.Frame.Origin.X);
     }
+
+    [Theory]
+    [InlineData(1e30f)]
+    [InlineData(384.0001f)]
+    [InlineData(float.NaN)]
+    public void RetailSweep_SweepObject_OutsideTheDomain_IsRefused(float x)
+    {
+        // Before the check a sweep towards x = 1e30 took seconds and ended "in" a cell of an unloaded landblock.
+        var s = new MisuseScene();
+        Position from = s.Walker.Position;
+        Position to = from;
+        to.Frame.Origin = to.Frame.Origin with { X = x };
+        var r = default(TransitionResult);
+        PublicState before = PublicState.Capture(s);
+        Assert.Throws<ArgumentException>(() => s.Sweep.SweepObject(s.Walker, from, to, false, ref r));
+        Assert.Throws<ArgumentException>(() => s.Sweep.SweepObject(s.Walker, to, from, false, ref r));
+        Assert.Throws<ArgumentException>(() => s.Sweep.SetPosition(s.Walker, to, SetPositionFlags.Placement));
+        Assert.Empty(PublicState.Diff(before, PublicState.Capture(s)));
+    }
 }
