@@ -53,6 +53,10 @@ public static class InputLimits
     /// </summary>
     public const float MaxAcceleration = 1000f;
 
+    /// <summary>Longest sweep accepted, metres: one landblock, 192 m (at most 384 transition steps of a 0.5 m sphere). The
+    /// engine's own steps move at most 30 m (<see cref="MaxAcceleration"/>).</summary>
+    public const float MaxSweepDistance = LandDefs.BlockLength;
+
     /// <summary>True when <paramref name="cellId"/>'s low word is an outdoor cell (1..0x40) or the landblock (0xFFFF): the
     /// ids <c>store_position</c> re-homes to the outdoor cell under the origin.</summary>
     internal static bool IsOutdoorOrBlock(uint cellId)

@@ -29,6 +29,7 @@ public class InputLimitsConstantsTests
         // 1,000 m/s² = 0x447A0000 (1.953125 × 2^9).
         Assert.Equal(1000f, InputLimits.MaxAcceleration);
         Assert.Equal(0x447A0000, BitConverter.SingleToInt32Bits(InputLimits.MaxAcceleration));
+        Assert.Equal(192f, InputLimits.MaxSweepDistance);
         Assert.Equal(65536, ObjCell.MaxShadowCapacity);
     }
 }

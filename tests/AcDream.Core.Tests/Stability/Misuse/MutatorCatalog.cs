@@ -33,12 +33,8 @@ internal static class MutatorCatalog
         ["SimplePartArray.Update(Single, Frame)"] = "engine seam: the object's step calls it with its quantum",
         ["SimplePartArray.SetCellId(UInt32)"] = "engine seam: the object hands its own cell id",
         ["SimplePartArray.SetFrame(Frame)"] = "engine seam: the object hands its own frame",
-        // Sweep entry points are the engine's seam to the collision module (CollisionSweep); SetPosition is called (a client
-        // sweep may forward to it), the steps below only with the object's own state.
-        // Open: in this suite a sweep of the walker to its own frame in cell id 0 did not return (not reproduced when the same
-        // case runs alone); until that is found, SweepObject is left out. Its domain check is pinned by
-        // PositionDomainTests.RetailSweep_SweepObject_OutsideTheDomain_IsRefused.
-        ["RetailSweep.SweepObject(PhysicsObj, Position, Position, Boolean, TransitionResult)"] = "open hang with a cell-0 target (see comment)",
+        // Sweep entry points are the engine's seam to the collision module (CollisionSweep); SweepObject and SetPosition are
+        // called (a client sweep may forward to them), the steps below only with the object's own state.
         ["RetailSweep.HandleAllCollisions(PhysicsObj, Boolean, Boolean)"] = "engine seam (CollisionSweep)",
         ["RetailSweep.UpdateCellShadows(PhysicsObj)"] = "engine seam (CollisionSweep)",
         ["RetailSweep.CalcCrossCells(PhysicsObj)"] = "engine seam (CollisionSweep)",

@@ -127,4 +127,20 @@ public class PositionDomainTests
         Assert.Throws<ArgumentException>(() => s.Sweep.SetPosition(s.Walker, to, SetPositionFlags.Placement));
         Assert.Empty(PublicState.Diff(before, PublicState.Capture(s)));
     }
+
+    [Fact]
+    public void RetailSweep_SweepObject_ToNoWorldCell_FailsAtOnce_AndALongSweepIsRefused()
+    {
+        // Cell 0xFFFFFFFF names landblock 0xFF (x = 255 > 254, outside the world): the sweep of the second object from the
+        // walker's position there ran 24,384 m / 0.5 m ≈ 48,800 transition steps. It now fails at once (false). A sweep of
+        // 192 m + 1 cm (MaxSweepDistance = 192 m) is refused.
+        var s = new MisuseScene();
+        Position from = s.Walker.Position;
+        var r = default(TransitionResult);
+        Assert.False(s.Sweep.SweepObject(s.Other, from, new Position(0xFFFFFFFFu, from.Frame), false, ref r));
+        Assert.False(s.Sweep.SweepObject(s.Other, from, new Position(0u, from.Frame), false, ref r));
+        Position far = from;
+        far.Frame.Origin = far.Frame.Origin with { Y = from.Frame.Origin.Y + 192.01f };
+        Assert.Throws<ArgumentException>(() => s.Sweep.SweepObject(s.Other, from, far, false, ref r));
+    }
 }

@@ -92,7 +92,9 @@ public sealed class RetailSweep : CollisionSweep
     /// <inheritdoc />
     /// <exception cref="ArgumentNullException"><paramref name="obj"/> is null.</exception>
     /// <exception cref="ArgumentException">A position is outside the position domain (<see cref="InputLimits"/>: unit
-    /// quaternion; origin finite, within ±65,536 m, outdoor x, y in [−192, 384]); nothing is changed.</exception>
+    /// quaternion; origin finite, within ±65,536 m, outdoor x, y in [−192, 384]) or the sweep is longer than
+    /// <see cref="InputLimits.MaxSweepDistance"/> (192 m); nothing is changed. A position in no world cell (id 0,
+    /// 0xFFFFFFFF, a landblock outside the world) makes the sweep fail (false).</exception>
     // retail seam: CPhysicsObj::transition (acclient.c:320060), ported as PhysicsObj.RunTransition
     public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
     {
