@@ -78,18 +78,35 @@ public class WorldTickTests
     }
 
     [Fact]
-    public void SetFrame_NaNQuaternionWithFiniteOrigin_BecomesZeroQuaternion()
+    public void SetFrameInternal_NaNQuaternionWithFiniteOrigin_BecomesZeroQuaternion()
     {
         var world = new PhysicsWorld();
         PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(1f, 2f, 3f));
         Frame bad = Frame.Identity;
         bad.Origin = new Vector3(4f, 5f, 6f);
         bad.SetQuaternionRaw(float.NaN, 0f, 0f, 0f);
-        obj.SetFrame(bad);
-        // IsValid fails and IsValidExceptForHeading holds: retail zeroes the quaternion (acclient.c:321327).
+        obj.SetFrameInternal(bad);
+        // IsValid fails and IsValidExceptForHeading holds: retail zeroes the quaternion (acclient.c:321327). The engine's own
+        // steps keep that repair.
         Assert.Equal(new Vector3(4f, 5f, 6f), obj.Position.Frame.Origin);
         Assert.Equal(0f, obj.Position.Frame.Qw);
         Assert.Equal(0f, obj.Position.Frame.Qz);
+    }
+
+    [Fact]
+    public void SetFrame_NaNQuaternionWithFiniteOrigin_IsRefused_StateUnchanged()
+    {
+        // non-retail (docs/divergences.md, "Value domains"): the public SetFrame refuses the NaN quaternion instead of storing
+        // the retail repair's all-zero rotation.
+        var world = new PhysicsWorld();
+        PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(1f, 2f, 3f));
+        Position before = obj.Position;
+        Frame bad = Frame.Identity;
+        bad.Origin = new Vector3(4f, 5f, 6f);
+        bad.SetQuaternionRaw(float.NaN, 0f, 0f, 0f);
+        Assert.Throws<ArgumentException>(() => obj.SetFrame(bad));
+        Assert.Equal(before, obj.Position);
+        Assert.Equal(1f, obj.Position.Frame.Qw);
     }
 
     [Fact]

@@ -12,7 +12,9 @@ namespace AcDream.Core.Physics.Cells;
 /// (acclient.h:31886, PORTAL/ccell/CLandCell.c) with the <c>CObjCell</c> members terrain needs (water type, position,
 /// landblock).
 /// </summary>
-/// <remarks>All points given to a land cell are local to its landblock (metres, 0..192 in x and y).</remarks>
+/// <remarks>All points given to a land cell are local to its landblock (metres, 0..192 in x and y). Valid domain of the
+/// queries: any point or position (a point outside the cell or non-finite gives a miss or false, never an exception); they
+/// never change the cell.</remarks>
 public sealed partial class LandCell
 {
     private readonly Polygon _polygon0;

@@ -19,15 +19,22 @@ public abstract partial class ObjCell
     /// <summary>The shadows in the cell, <see cref="NumShadowObjects"/> long, in retail's list order.</summary>
     internal ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
 
+    /// <summary>Largest shadow capacity <see cref="ReserveShadowCapacity"/> accepts: 65,536, far above any real cell's crowd.</summary>
+    public const int MaxShadowCapacity = 65536;
+
     /// <summary>
     /// Makes room for <paramref name="capacity"/> shadows without growing later (for a client that knows how crowded a cell
     /// will be, e.g. when its landblock loads). The list otherwise grows by <see cref="ShadowListGrowth"/> only past its
     /// largest size so far, and never shrinks.
     /// </summary>
-    /// <exception cref="ArgumentOutOfRangeException"><paramref name="capacity"/> is negative.</exception>
+    /// <param name="capacity">Shadows to make room for: 0 ..= <see cref="MaxShadowCapacity"/> (65,536).</param>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="capacity"/> is negative or above
+    /// <see cref="MaxShadowCapacity"/> (state unchanged).</exception>
     public void ReserveShadowCapacity(int capacity)
     {
         ArgumentOutOfRangeException.ThrowIfNegative(capacity);
+        // non-retail: a bound on the reservation (int.MaxValue ran out of memory)
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(capacity, MaxShadowCapacity);
         if (capacity > _shadowObjects.Length)
         {
             Array.Resize(ref _shadowObjects, capacity);

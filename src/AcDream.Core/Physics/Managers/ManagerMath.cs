@@ -21,6 +21,7 @@ internal static class ManagerMath
     public static double Magnitude(System.Numerics.Vector3 v) =>
         System.Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
 
-    /// <summary>True when the frame can be queued or stored: finite origin and a valid unit quaternion.</summary>
-    public static bool IsUsable(in Position p) => p.Frame.IsValid() && VectorMath.IsFinite(p.Frame.Origin);
+    /// <summary>True when the position can be queued or stored: a valid unit quaternion and an origin in the position domain
+    /// (<see cref="InputLimits"/>).</summary>
+    public static bool IsUsable(in Position p) => InputLimits.IsPositionInDomain(p);
 }

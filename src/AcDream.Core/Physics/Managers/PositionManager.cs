@@ -63,6 +63,8 @@ public sealed class PositionManager
     // retail: PositionManager::InterpolateTo (acclient.c:388316)
     public void InterpolateTo(in Position p, bool keepHeading)
     {
+        // non-retail: validated before the manager is created, so that a refusal leaves no new manager behind
+        ThrowIfUnusable(p);
         PhysicsObj.Touch();
         InterpolationManager ??= new InterpolationManager(PhysicsObj);
         InterpolationManager.InterpolateTo(p, keepHeading);
@@ -78,11 +80,18 @@ public sealed class PositionManager
 
     /// <summary>Sticks the object to another object for one second (see <see cref="StickyManager.StickTo"/>).</summary>
     /// <param name="objectId">Target id.</param>
-    /// <param name="radius">Target radius, metres.</param>
-    /// <param name="height">Target height (unused, as in retail).</param>
+    /// <param name="radius">Target radius, metres: finite.</param>
+    /// <param name="height">Target height (unused, as in retail): finite.</param>
+    /// <exception cref="System.ArgumentException">The radius or the height is not finite; no manager is created.</exception>
     // retail: PositionManager::StickTo (acclient.c:388341)
     public void StickTo(uint objectId, float radius, float height)
     {
+        // non-retail: validated before the manager is created, so that a refusal leaves no new manager behind
+        if (!float.IsFinite(radius) || !float.IsFinite(height))
+        {
+            throw new System.ArgumentException("Radius and height must be finite.", nameof(radius));
+        }
+
         PhysicsObj.Touch();
         StickyManager ??= new StickyManager(PhysicsObj);
         StickyManager.StickTo(objectId, radius, height);
@@ -103,11 +112,20 @@ public sealed class PositionManager
 
     /// <summary>Constrains the object's own motion relative to <paramref name="p"/> (see <see cref="ConstraintManager"/>).</summary>
     /// <param name="p">Constraint position.</param>
-    /// <param name="startDistance">Counted distance at which scaling starts, metres.</param>
-    /// <param name="maxDistance">Counted distance at which offsets are zeroed, metres.</param>
+    /// <param name="startDistance">Counted distance at which scaling starts, metres: finite.</param>
+    /// <param name="maxDistance">Counted distance at which offsets are zeroed, metres: finite.</param>
+    /// <exception cref="System.ArgumentException">The position is outside the position domain (<see cref="InputLimits"/>) or a
+    /// distance is not finite; no manager is created.</exception>
     // retail: PositionManager::ConstrainTo (acclient.c:388366)
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {
+        // non-retail: validated before the manager is created, so that a refusal leaves no new manager behind
+        ThrowIfUnusable(p);
+        if (!float.IsFinite(startDistance) || !float.IsFinite(maxDistance))
+        {
+            throw new System.ArgumentException("Constraint distances must be finite.", nameof(maxDistance));
+        }
+
         PhysicsObj.Touch();
         ConstraintManager ??= new ConstraintManager(PhysicsObj);
         ConstraintManager.ConstrainTo(p, startDistance, maxDistance);
@@ -123,6 +141,14 @@ public sealed class PositionManager
         (InterpolationManager is null || (InterpolationManager.Count == 0 && InterpolationManager.NodeFailCounter <= 0))
         && (StickyManager is null || StickyManager.TargetId == 0)
         && (ConstraintManager is null || !ConstraintManager.IsConstrained);
+
+    private static void ThrowIfUnusable(in Position p)
+    {
+        if (!ManagerMath.IsUsable(p))
+        {
+            throw new System.ArgumentException("Position must be in the position domain (InputLimits).", nameof(p));
+        }
+    }
 
     /// <summary>True when the constraint holds the object fully.</summary>
     // retail: PositionManager::IsFullyConstrained (acclient.c:388390)

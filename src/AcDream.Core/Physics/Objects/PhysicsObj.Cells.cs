@@ -7,25 +7,50 @@ namespace AcDream.Core.Physics.Objects;
 public sealed partial class PhysicsObj
 {
     /// <summary>The object this one is attached to (retail <c>parent</c>), or null. A parented object is not simulated.</summary>
-    public PhysicsObj? Parent { get; private set; }
+    /// <remarks>Kept with the object's other rarely used members (most objects have no parent).</remarks>
+    public PhysicsObj? Parent
+    {
+        get => _rare?.Parent;
+        private set
+        {
+            if (value is not null || _rare is not null)
+            {
+                Rare(true)!.Parent = value;
+            }
+        }
+    }
 
     /// <summary>Objects attached to this one (retail <c>children</c>), or null when none was ever attached.</summary>
-    public ChildList? Children { get; private set; }
+    public ChildList? Children
+    {
+        get => _rare?.Children;
+        private set
+        {
+            if (value is not null || _rare is not null)
+            {
+                Rare(true)!.Children = value;
+            }
+        }
+    }
 
     /// <summary>
     /// Attaches this object to <paramref name="parent"/> at <paramref name="frame"/> relative to part
     /// <paramref name="partIndex"/> (the parent's own frame when the part does not exist). The child leaves the world
     /// simulation: update_object skips parented objects.
     /// </summary>
+    /// <param name="parent">The parent: an object of the same world, not this one.</param>
+    /// <param name="partIndex">The parent's part (any value; a missing part means the parent's own frame).</param>
+    /// <param name="frame">The offset from the parent: a unit quaternion and each origin component within
+    /// ±<see cref="InputLimits.MaxChildOffset"/> (192 m).</param>
     /// <returns>True when attached; false when <paramref name="parent"/> already holds this object as a child.</returns>
     /// <exception cref="ArgumentException">The parent is this object or one of its descendants (a cycle), belongs to another
-    /// world, or the frame is invalid; nothing changes.</exception>
+    /// world, or the frame is outside that domain; nothing changes.</exception>
     // retail: CPhysicsObj::set_parent (acclient.c:323002), simplified: no shadow cells
     public bool SetParent(PhysicsObj parent, uint partIndex, in Frame frame)
     {
-        Touch();
         ArgumentNullException.ThrowIfNull(parent);
-        if (parent.World != World || !frame.IsValid() || !VectorMath.IsFinite(frame.Origin))
+        // non-retail: the child frame's domain (InputLimits.MaxChildOffset, unit quaternion)
+        if (parent == this || parent.World != World || !InputLimits.IsChildFrameInDomain(frame))
         {
             throw new ArgumentException("Invalid parent or frame.", nameof(parent));
         }
@@ -36,6 +61,7 @@ public sealed partial class PhysicsObj
             throw new ArgumentException("The parent is this object or one of its descendants (a parent cycle).", nameof(parent));
         }
 
+        Touch();
         parent.Touch();
         parent.Children ??= new ChildList();
         if (parent.Children.IndexOf(this) >= 0)
@@ -112,7 +138,7 @@ public sealed partial class PhysicsObj
         Frame basis = parts is not null && partIndex < (uint)parts.NumParts ? parts.GetPartFrame((int)partIndex) : _position.Frame;
         Frame f = basis;
         f.Combine(basis, childFrame);
-        child.SetFrame(f);
+        child.SetFrameInternal(f);
         child.ParticleManager?.UpdateParticles();
         child.ScriptManager?.UpdateScripts();
     }

@@ -20,12 +20,13 @@ public sealed partial class PhysicsObj
     /// <exception cref="ArgumentException">The hook already belongs to an object.</exception>
     public void AddHook(PhysicsObjHook hook)
     {
-        Touch();
         ArgumentNullException.ThrowIfNull(hook);
         if (hook.Owner is not null)
         {
             throw new ArgumentException("The hook already belongs to an object.", nameof(hook));
         }
+
+        Touch();
 
         hook.Owner = this;
         hook.Prev = null;
@@ -43,8 +44,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::add_anim_hook (acclient.c:322062)
     public void AddAnimHook(IAnimHook hook)
     {
-        Touch();
         ArgumentNullException.ThrowIfNull(hook);
+        Touch();
         if (_animHookCount == _animHooks.Length)
         {
             Array.Resize(ref _animHooks, _animHooks.Length == 0 ? 8 : _animHooks.Length * 2);
@@ -106,12 +107,17 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Applies one interpolated hook value to the object or its parts.</summary>
-    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="ArgumentException">The value is NaN or infinite, or a scale outside [0.01, 100] (state unchanged).</exception>
     // retail: CPhysicsObj::process_fp_hook (acclient.c:320571)
     internal void ProcessFPHook(PhysicsHookType type, float value, uint userData)
     {
-        Touch();
         ThrowIfNotFinite(value, 0.0);
+        if (type == PhysicsHookType.Scale)
+        {
+            InputLimits.ThrowIfScaleOutside(value, nameof(value));
+        }
+
+        Touch();
         switch (type)
         {
             case PhysicsHookType.Scale:
@@ -145,12 +151,18 @@ public sealed partial class PhysicsObj
 
     /// <summary>Scales the object to <paramref name="scale"/> now, or over <paramref name="delta"/> seconds of physics clock
     /// when delta &gt;= EPSILON.</summary>
-    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    /// <param name="scale">The target scale: in [<see cref="InputLimits.MinScale"/>, <see cref="InputLimits.MaxScale"/>] =
+    /// [0.01, 100] (a fade passes only through values between the current scale and this one).</param>
+    /// <param name="delta">Fade duration, seconds: finite (below EPSILON: at once).</param>
+    /// <exception cref="ArgumentException">The scale is outside [0.01, 100] (also NaN, ±∞, 0, negative) or the duration is
+    /// not finite (state unchanged; retail accepts any).</exception>
     // retail: CPhysicsObj::SetScale (acclient.c:320621)
     public void SetScale(float scale, double delta)
     {
-        Touch();
         ThrowIfNotFinite(scale, delta);
+        // non-retail: the scale's domain (a non-positive scale made every later sweep throw)
+        InputLimits.ThrowIfScaleOutside(scale, nameof(scale));
+        Touch();
         if (delta >= PhysicsGlobals.Epsilon)
         {
             AddFPHook(PhysicsHookType.Scale, delta, Scale, scale, 0);
@@ -162,14 +174,16 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Sets the scale at once (retail <c>SetScaleStatic</c>).</summary>
-    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <param name="scale">The scale: in [<see cref="InputLimits.MinScale"/>, <see cref="InputLimits.MaxScale"/>] = [0.01, 100].</param>
+    /// <exception cref="ArgumentException">The scale is outside [0.01, 100] (also NaN, ±∞, 0, negative); state unchanged.</exception>
     // retail: CPhysicsObj::SetScaleStatic (acclient.c:319007)
     public void SetScaleStatic(float scale)
     {
+        // non-retail: the scale's domain (a non-positive scale made every later sweep throw)
+        InputLimits.ThrowIfScaleOutside(scale, nameof(scale));
         Touch();
-        ThrowIfNotFinite(scale, 0.0);
-        Scale = scale;
         PartArray?.SetScale(scale);
+        Scale = scale;
     }
 
     /// <summary>Fades the translucency from 0 to <paramref name="translucency"/> over <paramref name="delta"/> seconds (retail
@@ -178,8 +192,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetTranslucency (acclient.c:318693)
     public void SetTranslucency(float translucency, double delta)
     {
-        Touch();
         ThrowIfNotFinite(translucency, delta);
+        Touch();
         if (delta >= PhysicsGlobals.Epsilon)
         {
             AddFPHook(PhysicsHookType.Translucency, delta, 0.0f, translucency, 0);
@@ -195,9 +209,9 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetTranslucency2 (acclient.c:316920)
     public void SetTranslucency2(float start, float end, double delta)
     {
-        Touch();
         ThrowIfNotFinite(start, delta);
         ThrowIfNotFinite(end, delta);
+        Touch();
         if (delta >= PhysicsGlobals.Epsilon)
         {
             AddFPHook(PhysicsHookType.Translucency, delta, start, end, 0);
@@ -213,8 +227,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::SetTranslucencyInternal (acclient.c:316802)
     internal void SetTranslucencyInternal(float translucency)
     {
-        Touch();
         ThrowIfNotFinite(translucency, 0.0);
+        Touch();
         float t = translucency < (double)_translucencyOriginal ? _translucencyOriginal : translucency;
         Translucency = t;
         PartArray?.SetTranslucency(t);
@@ -258,8 +272,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::CallPES (acclient.c:318972)
     public void CallPes(uint scriptId, double delta)
     {
-        Touch();
         ThrowIfNotFinite(0f, delta);
+        Touch();
         if (delta >= PhysicsGlobals.Epsilon)
         {
             float upper = (float)delta;
@@ -356,11 +370,13 @@ public sealed partial class PhysicsObj
         _animHookCount = 0;
     }
 
+    // non-retail: a fade's duration is a span of the physics clock, so it has the clock's domain (|delta| < 2^40 s); a
+    // longer one overflowed the float duration of CallPES's random delay to infinity
     private static void ThrowIfNotFinite(float value, double delta)
     {
-        if (!float.IsFinite(value) || !double.IsFinite(delta))
+        if (!float.IsFinite(value) || !InputLimits.IsClockTimeInDomain(delta))
         {
-            throw new ArgumentException("Hook values and durations must be finite.");
+            throw new ArgumentException("Hook values must be finite and durations within ±2^40 s.");
         }
     }
 }

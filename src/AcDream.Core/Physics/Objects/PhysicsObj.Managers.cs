@@ -40,15 +40,16 @@ public sealed partial class PhysicsObj
     public bool IsMovingTo() => MovementManager is not null && MovementManager.IsMovingTo();
 
     /// <summary>Queues an interpolation towards <paramref name="p"/> (creating the position manager).</summary>
-    /// <exception cref="System.ArgumentException">The frame is not valid.</exception>
+    /// <param name="p">The target: the position domain of <see cref="StorePosition"/> (unit quaternion; origin within
+    /// ±65,536 m, outdoor x, y in [−192, 384]).</param>
+    /// <param name="keepHeading">True to keep the object's heading.</param>
+    /// <exception cref="System.ArgumentException">The position is outside that domain; checked before the position manager
+    /// is created (state unchanged).</exception>
     // retail: CPhysicsObj::InterpolateTo (acclient.c:317580)
     public void InterpolateTo(in Position p, bool keepHeading)
     {
+        InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
-        if (!p.Frame.IsValid())
-        {
-            throw new System.ArgumentException("Position frame must be valid.", nameof(p));
-        }
 
         MakePositionManager().InterpolateTo(p, keepHeading);
     }
@@ -66,15 +67,21 @@ public sealed partial class PhysicsObj
     public bool IsInterpolating() => PositionManager is not null && PositionManager.IsInterpolating();
 
     /// <summary>Constrains the object near <paramref name="p"/> (creating the position manager).</summary>
-    /// <exception cref="System.ArgumentException">The frame is not valid.</exception>
+    /// <param name="p">The anchor: the position domain of <see cref="StorePosition"/>.</param>
+    /// <param name="startDistance">Distance at which the constraint starts to act, metres: finite.</param>
+    /// <param name="maxDistance">Distance at which it holds fully, metres: finite.</param>
+    /// <exception cref="System.ArgumentException">The position is outside that domain or a distance is not finite; checked
+    /// before the position manager is created (state unchanged).</exception>
     // retail: CPhysicsObj::ConstrainTo (acclient.c:317590)
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {
-        Touch();
-        if (!p.Frame.IsValid())
+        InputLimits.ThrowIfOutside(p, nameof(p));
+        if (!float.IsFinite(startDistance) || !float.IsFinite(maxDistance))
         {
-            throw new System.ArgumentException("Position frame must be valid.", nameof(p));
+            throw new System.ArgumentException("Constraint distances must be finite.", nameof(maxDistance));
         }
+
+        Touch();
 
         MakePositionManager().ConstrainTo(p, startDistance, maxDistance);
     }

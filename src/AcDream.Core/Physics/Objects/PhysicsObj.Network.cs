@@ -8,7 +8,11 @@ public sealed partial class PhysicsObj
     private UpdateTimeStamps _updateTimes;
 
     /// <summary>Last accepted 16-bit timestamp of <paramref name="stamp"/> (retail <c>update_times</c>).</summary>
-    public ushort GetUpdateTime(PhysicsTimeStamp stamp) => _updateTimes[(int)stamp];
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="stamp"/> is not a defined stamp.</exception>
+    public ushort GetUpdateTime(PhysicsTimeStamp stamp) => _updateTimes[StampIndex(stamp)];
+
+    private int StampIndex(PhysicsTimeStamp stamp) =>
+        (uint)stamp < (uint)UpdateTimeStamps.Count ? (int)stamp : throw new ArgumentOutOfRangeException(nameof(stamp));
 
     /// <summary>
     /// True when <paramref name="newTime"/> is newer than the stored stamp in 16-bit wrap-around order (a difference above
@@ -17,7 +21,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::newer_event (acclient.c:143014)
     public bool NewerEvent(PhysicsTimeStamp stamp, ushort newTime)
     {
-        ushort old = _updateTimes[(int)stamp];
+        ushort old = _updateTimes[StampIndex(stamp)];
         bool newer = System.Math.Abs(newTime - old) > 0x7FFF ? newTime < old : old < newTime;
         if (newer)
         {
@@ -32,7 +36,11 @@ public sealed partial class PhysicsObj
     /// otherwise, only with contact, an object at least 96 m from the player snaps there and a nearer one interpolates.
     /// </summary>
     /// <returns>True when the position was used.</returns>
-    /// <exception cref="ArgumentException">The frame is not valid; state unchanged.</exception>
+    /// <param name="p">The reported position: the position domain of <see cref="StorePosition"/> (unit quaternion; origin
+    /// within ±65,536 m, outdoor x, y in [−192, 384]).</param>
+    /// <param name="teleportTimestamp">The report's 16-bit teleport timestamp (any value; wrap-around order).</param>
+    /// <param name="contact">The report says the object is on the ground.</param>
+    /// <exception cref="ArgumentException">The position is outside that domain; state unchanged.</exception>
     // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450)
     public bool MoveOrTeleport(in Position p, ushort teleportTimestamp, bool contact) =>
         MoveOrTeleportResult(p, teleportTimestamp, contact) >= ReceivedPositionResult.Interpolating;
@@ -40,11 +48,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450), answering which branch it took
     private ReceivedPositionResult MoveOrTeleportResult(in Position p, ushort teleportTimestamp, bool contact)
     {
+        InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
-        if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
-        {
-            throw new ArgumentException("Position frame must be valid.", nameof(p));
-        }
 
         ushort stored = _updateTimes[(int)PhysicsTimeStamp.Teleport];
         bool older = System.Math.Abs(stored - teleportTimestamp) > 0x7FFF ? stored < teleportTimestamp : teleportTimestamp < stored;

@@ -187,8 +187,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_velocity (acclient.c:318577)
     public void SetVelocity(Vector3 velocity)
     {
-        Touch();
         ThrowIfNotFinite(velocity, nameof(velocity));
+        Touch();
         // retail: Vector3::operator!= (acclient.c:156312): some axis differs by more than EPSILON
         if (DiffersByMoreThanEpsilon(velocity, _velocity))
         {
@@ -227,8 +227,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_local_velocity (acclient.c:318617)
     public void SetLocalVelocity(Vector3 localVelocity)
     {
-        Touch();
         ThrowIfNotFinite(localVelocity, nameof(localVelocity));
+        Touch();
         SetVelocity(_position.Frame.LocalToGlobalVec(localVelocity));
     }
 
@@ -237,8 +237,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::set_omega (acclient.c:316612)
     public void SetOmega(Vector3 omega)
     {
-        Touch();
         ThrowIfNotFinite(omega, nameof(omega));
+        Touch();
         _omega = omega;
     }
 

@@ -8,14 +8,28 @@ public sealed partial class PhysicsObj
 {
     /// <summary>
     /// Stores <paramref name="frame"/> as the object's frame without any collision test, places the parts and moves the
-    /// attached children. A frame whose origin is finite but whose quaternion has a NaN gets an all-zero quaternion, as retail.
+    /// attached children.
     /// </summary>
-    /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged; retail would store it).</exception>
+    /// <param name="frame">The new frame, local to the object's landblock: a unit quaternion (|q|² within 5 × EPSILON of 1; not
+    /// <c>default(Frame)</c>) and an origin within the position domain of the object's cell
+    /// (<see cref="InputLimits.MaxCoordinate"/>; outdoor: x, y in [−192, 384], see <see cref="InputLimits.OutdoorMargin"/>).</param>
+    /// <exception cref="ArgumentException">The frame is outside that domain (state unchanged; retail would store it, and would
+    /// zero a NaN quaternion whose origin is valid: that repair is kept for the engine's own steps).</exception>
     // retail: CPhysicsObj::set_frame (acclient.c:321327)
     public void SetFrame(in Frame frame)
     {
+        // non-retail: the frame's domain is checked before anything changes (retail stores any frame)
+        InputLimits.ThrowIfOutside(_position.ObjCellId, frame, nameof(frame));
         Touch();
-        ThrowIfNotFinite(frame.Origin, nameof(frame));
+        SetFrameInternal(frame);
+    }
+
+    /// <summary>The engine's <c>set_frame</c> (no domain check): a frame whose origin is finite but whose quaternion has a NaN
+    /// gets an all-zero quaternion, as retail.</summary>
+    // retail: CPhysicsObj::set_frame (acclient.c:321327)
+    internal void SetFrameInternal(in Frame frame)
+    {
+        Touch();
         Frame f = frame;
         if (!f.IsValid() && f.IsValidExceptForHeading())
         {
@@ -32,12 +46,14 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Stores a frame with no validity repair (retail <c>set_initial_frame</c>).</summary>
-    /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged; retail would store it).</exception>
+    /// <param name="frame">The frame: the domain of <see cref="SetFrame"/> (unit quaternion, origin in the cell's domain).</param>
+    /// <exception cref="ArgumentException">The frame is outside that domain (state unchanged; retail would store it).</exception>
     // retail: CPhysicsObj::set_initial_frame (acclient.c:321355)
     public void SetInitialFrame(in Frame frame)
     {
+        // non-retail: the frame's domain is checked before anything changes
+        InputLimits.ThrowIfOutside(_position.ObjCellId, frame, nameof(frame));
         Touch();
-        ThrowIfNotFinite(frame.Origin, nameof(frame));
         _position.Frame = frame;
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
@@ -48,29 +64,39 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Turns the object to face <paramref name="degrees"/> (clockwise from north), keeping its origin.</summary>
+    /// <param name="degrees">Compass heading, degrees: any finite value (wrapped).</param>
     /// <exception cref="ArgumentException">The heading is NaN or infinite.</exception>
     // retail: CPhysicsObj::set_heading (acclient.c:321376)
     public void SetHeading(float degrees)
     {
-        Touch();
         if (!float.IsFinite(degrees))
         {
             throw new ArgumentException("Heading must be finite.", nameof(degrees));
         }
 
+        Touch();
         Frame f = _position.Frame;
         f.SetHeading(degrees);
-        SetFrame(f);
+        SetFrameInternal(f);
     }
 
     /// <summary>Writes a position without a cell change or collision test (outdoor ids are re-homed to the cell under the
     /// origin first).</summary>
-    /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged).</exception>
+    /// <param name="p">The position: a unit quaternion and an origin in the position domain of its cell id
+    /// (<see cref="InputLimits"/>: every component within ±65,536 m; outdoor: x, y in [−192, 384]).</param>
+    /// <exception cref="ArgumentException">The position is outside that domain (state unchanged).</exception>
     // retail: CPhysicsObj::store_position (acclient.c:321388)
     public void StorePosition(in Position p)
     {
+        // non-retail: the position's domain is checked before anything changes (retail stores any position)
+        InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
-        ThrowIfNotFinite(p.Frame.Origin, nameof(p));
+        StorePositionInternal(p);
+    }
+
+    // retail: CPhysicsObj::store_position (acclient.c:321388), for a position already in the domain
+    private void StorePositionInternal(in Position p)
+    {
         Position np = p;
         if ((np.ObjCellId & 0xFFFFu) < 0x100u)
         {
@@ -83,17 +109,21 @@ public sealed partial class PhysicsObj
             PartArray?.SetCellId(np.ObjCellId);
         }
 
-        SetFrame(np.Frame);
+        SetFrameInternal(np.Frame);
     }
 
     /// <summary>
     /// Places the object at <paramref name="p"/> through the world's <see cref="CollisionSweep"/> with the flags retail uses for a
     /// simple move: PLACEMENT-free teleport with a position event, plus SLIDE when <paramref name="sliding"/>.
     /// </summary>
-    /// <exception cref="ArgumentException">The frame is not valid (NaN, non-unit quaternion); state unchanged.</exception>
+    /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
+    /// <param name="sliding">True to let the placement slide.</param>
+    /// <exception cref="ArgumentException">The position is outside that domain (NaN, non-unit quaternion, origin out of
+    /// range); state unchanged.</exception>
     // retail: CPhysicsObj::SetPositionSimple (acclient.c:323420)
     public SetPositionError SetPositionSimple(in Position p, bool sliding)
     {
+        InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
         SetPositionFlags flags = SetPositionFlags.Teleport | SetPositionFlags.SendPositionEvent;
         if (sliding)
@@ -105,16 +135,15 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Places the object at <paramref name="p"/> through the world's <see cref="CollisionSweep"/>.</summary>
-    /// <exception cref="ArgumentException">The frame is not valid (NaN, non-unit quaternion); state unchanged.</exception>
+    /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
+    /// <param name="flags">The placement flags.</param>
+    /// <exception cref="ArgumentException">The position is outside that domain (NaN, non-unit quaternion, origin out of
+    /// range); state unchanged.</exception>
     // retail: CPhysicsObj::SetPosition (acclient.c:323289)
     public SetPositionError SetPosition(in Position p, SetPositionFlags flags)
     {
+        InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
-        if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
-        {
-            throw new ArgumentException("Position frame must be valid.", nameof(p));
-        }
-
         return World.Sweep.SetPosition(this, p, flags);
     }
 
@@ -125,23 +154,20 @@ public sealed partial class PhysicsObj
     /// <returns>False when the object has a parent or could not be placed. False, with nothing changed, when the position's
     /// cell does not exist or is not loaded (an outdoor cell whose landblock the sweep's cells do not hold, an indoor cell not
     /// loaded, an invalid cell id): the object stays where it was, out of the world if it was.</returns>
-    /// <exception cref="ArgumentException">The frame is not valid; state unchanged.</exception>
+    /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
+    /// <exception cref="ArgumentException">The position is outside that domain; state unchanged.</exception>
     // retail: CPhysicsObj::enter_world(Position*) (acclient.c:323440) -> enter_world(slide) (acclient.c:323345)
     public bool EnterWorld(in Position p)
     {
-        Touch();
-        if (!p.Frame.IsValid() || !VectorMath.IsFinite(p.Frame.Origin))
-        {
-            throw new ArgumentException("Position frame must be valid.", nameof(p));
-        }
-
+        InputLimits.ThrowIfOutside(p, nameof(p));
         // non-retail: retail stores the position and sends the object to the lost cell; a client is told instead
         if (!World.Sweep.FindsCell(this, p))
         {
             return false;
         }
 
-        StorePosition(p);
+        Touch();
+        StorePositionInternal(p);
         if (Parent is not null)
         {
             return false;
@@ -173,15 +199,36 @@ public sealed partial class PhysicsObj
     /// acceleration, then the collision reports and cell shadows through the world's <see cref="CollisionSweep"/>.
     /// A result with no cell sends the object to the lost cell.
     /// </summary>
+    /// <param name="t">The result: <see cref="TransitionResult.CurrentPosition"/> in the domain of <see cref="StorePosition"/>,
+    /// finite contact-plane and sliding normals, of unit length (|n|² within 5 × EPSILON of 1) when flagged valid, and a finite
+    /// contact-plane distance.</param>
+    /// <exception cref="ArgumentException">The result is outside that domain (state unchanged; retail stores it).</exception>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
     public void CommitTransition(in TransitionResult t)
+    {
+        // non-retail: a client sweep's result is checked before anything changes
+        InputLimits.ThrowIfOutside(t.CurrentPosition, nameof(t));
+        if (!InputLimits.IsNormalInDomain(t.ContactPlaneNormal, t.ContactPlaneValid)
+            || !InputLimits.IsNormalInDomain(t.SlidingNormal, t.SlidingNormalValid) || !float.IsFinite(t.ContactPlaneD))
+        {
+            throw new ArgumentException(
+                "Contact-plane and sliding normals must be finite (unit length when flagged valid) and the plane distance finite.",
+                nameof(t));
+        }
+
+        CommitTransitionInternal(t);
+    }
+
+    /// <summary>The engine's commit of a sweep result of its own (no domain check).</summary>
+    // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
+    internal void CommitTransitionInternal(in TransitionResult t)
     {
         Touch();
         bool prevOnWalkable = (_transientState & TransientState.OnWalkable) != 0;
         bool prevContact = (_transientState & TransientState.Contact) != 0;
         if (t.CurrentCellId == 0)
         {
-            GoToLostCell(t.CurrentPosition);
+            GoToLostCellInternal(t.CurrentPosition);
             return;
         }
 
@@ -201,7 +248,7 @@ public sealed partial class PhysicsObj
             ChangeCell(t.CurrentCellId);
         }
 
-        SetFrame(t.CurrentPosition.Frame);
+        SetFrameInternal(t.CurrentPosition.Frame);
         ContactPlaneCellId = t.ContactPlaneCellId;
         ContactPlaneNormal = t.ContactPlaneNormal;
         ContactPlaneD = t.ContactPlaneD;
@@ -261,13 +308,24 @@ public sealed partial class PhysicsObj
     /// <summary>
     /// Sends the object out of every cell (retail's lost cell): leaves its cell, stores <paramref name="p"/> and deactivates it.
     /// </summary>
+    /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
+    /// <exception cref="ArgumentException">The position is outside that domain; checked before the object leaves its cell
+    /// (state unchanged).</exception>
     // retail: the lost-cell branch of CPhysicsObj::SetPositionInternal (acclient.c:322503, 323034)
     public void GoToLostCell(in Position p)
+    {
+        InputLimits.ThrowIfOutside(p, nameof(p));
+        GoToLostCellInternal(p);
+    }
+
+    // retail: the lost-cell branch of CPhysicsObj::SetPositionInternal (acclient.c:322503, 323034)
+    internal void GoToLostCellInternal(in Position p)
     {
         Touch();
         RemoveShadowsFromCells();
         LeaveCell();
-        StorePosition(p);
+        // The engine's own lost positions can be outside the domain (a sweep past the world edge): stored unchecked.
+        StorePositionInternal(p);
         _transientState &= ~TransientState.Active;
     }
 }

@@ -20,7 +20,8 @@ public sealed partial class PhysicsObj
     /// a weenie, and its first position (<see cref="EnterWorld"/>); between reports the server's MovementEvents drive its motion
     /// (<see cref="Motion.MovementEvent.ApplyInterpretedMotion"/>; docs/interpolation.md, "What a network layer sets first").</para></remarks>
     /// <param name="p">The reported position: the cell id and the frame local to that cell's landblock, as the server's
-    /// position update carries them.</param>
+    /// position update carries them; unit quaternion, origin within ±<see cref="InputLimits.MaxCoordinate"/>, outdoor x, y in
+    /// [−192, 384] (<see cref="InputLimits.OutdoorMargin"/>).</param>
     /// <param name="positionTimestamp">The update's 16-bit position sequence (retail POSITION_TS), compared with wrap-around: a
     /// report whose sequence is not newer than the last one applied is dropped.</param>
     /// <param name="teleportTimestamp">The update's 16-bit teleport sequence (retail TELEPORT_TS): older than the object's is a
@@ -35,7 +36,8 @@ public sealed partial class PhysicsObj
     /// when it was queued; <see cref="ReceivedPositionResult.Placed"/> when the object was placed there; and
     /// <see cref="ReceivedPositionResult.LeftWorld"/> when the report's cell is not loaded and the object was sent out of the
     /// world (cell 0), as retail does. The leash is re-armed for the last four.</returns>
-    /// <exception cref="ArgumentException"><paramref name="p"/> has a non-finite origin or an invalid rotation; nothing changes.</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is outside the position domain of <see cref="StorePosition"/>
+    /// (invalid rotation; origin not finite, beyond ±65,536 m, or outdoor x, y outside [−192, 384]); nothing changes.</exception>
     // retail: SmartBox::HandleReceivedPosition (acclient.c:145124)
     public ReceivedPositionResult HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)
     {
@@ -67,7 +69,13 @@ public sealed partial class PhysicsObj
         }
 
         // acclient.c:145227: re-arm the leash at the object's own position.
-        ConstrainTo(_position, (float)GetStartConstraintDistance(), (float)GetMaxConstraintDistance());
+        // non-retail: an own position outside the input domain (retail's zeroed quaternion, a free-space drift beyond
+        // ±65,536 m) skips the re-arm instead of refusing after the move
+        if (InputLimits.IsPositionInDomain(_position))
+        {
+            ConstrainTo(_position, (float)GetStartConstraintDistance(), (float)GetMaxConstraintDistance());
+        }
+
         return result;
     }
 
@@ -87,10 +95,11 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>
-    /// Sticks to object <paramref name="objectId"/> (its top-level parent when attached), with that object's radius; does
-    /// nothing when the world has no such object.
+    /// Sticks to object <paramref name="objectId"/> (its top-level parent when attached), with that object's radius. As
+    /// retail, the position manager is created (and the object activated) first, also when the world has no such object;
+    /// then nothing else happens.
     /// </summary>
-    /// <param name="objectId">Target id.</param>
+    /// <param name="objectId">Target id: any value (an id the world does not hold sticks to nothing).</param>
     // retail: CPhysicsObj::stick_to_object (acclient.c:319724)
     public void StickToObject(uint objectId)
     {

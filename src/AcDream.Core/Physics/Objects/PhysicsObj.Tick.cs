@@ -124,7 +124,7 @@ public sealed partial class PhysicsObj
                         {
                             Vector3 offset = _position.GetOffset(scratch.CurrentPosition);
                             CachedVelocity = DivideByQuantum(offset, quantum);
-                            CommitTransition(scratch);
+                            CommitTransitionInternal(scratch);
                         }
                         else
                         {

@@ -17,13 +17,34 @@ public sealed partial class PhysicsObj
     /// <paramref name="sweep"/>'s pool. Returns the transition (already given back to the pool, readable until the next
     /// sweep) or null when the sweep failed or all ten transitions were in use.
     /// </summary>
-    /// <exception cref="ArgumentException">A position has a NaN or infinite origin (nothing is changed).</exception>
+    /// <exception cref="ArgumentException">A position is outside the position domain (origin not finite, beyond ±65,536 m, or
+    /// outdoor x, y outside [−192, 384]; rotation not a unit quaternion); nothing is changed. The engine's own steps always
+    /// sweep inside it (a step moves an object at most 30 m from a re-homed origin, with a renormalised rotation); or the sweep
+    /// is longer than <see cref="InputLimits.MaxSweepDistance"/> (192 m). A position whose cell id is no world cell (0,
+    /// 0xFFFFFFFF, a landblock outside the world) makes the sweep fail (null).</exception>
     // retail: CPhysicsObj::transition (acclient.c:320060)
     internal Transition? RunTransition(RetailSweep sweep, in Position oldPos, in Position newPos, bool adminMove)
     {
-        if (!VectorMath.IsFinite(oldPos.Frame.Origin) || !VectorMath.IsFinite(newPos.Frame.Origin))
+        // non-retail: the position domain (a sweep towards 1e30 m took seconds and ended in an unloaded block's cell; an
+        // invalid rotation never ended)
+        if (!InputLimits.IsPositionInDomain(oldPos) || !InputLimits.IsPositionInDomain(newPos))
         {
-            throw new ArgumentException("Sweep positions must have finite origins.", nameof(newPos));
+            throw new ArgumentException("Sweep positions must lie in the position domain (InputLimits).", nameof(newPos));
+        }
+
+        // non-retail: a sweep between cells that are no world cells fails at once, and one longer than MaxSweepDistance is
+        // refused (a sweep to the landblock 0xFF, outside the world, ran tens of thousands of steps); the engine's own steps
+        // move at most 30 m inside the world
+        if (!LandDefs.InboundValidCellId(oldPos.ObjCellId) || !LandDefs.InboundValidCellId(newPos.ObjCellId))
+        {
+            return null;
+        }
+
+        Vector3 d = oldPos.GetOffset(newPos);
+        if ((double)d.X * d.X + (double)d.Y * d.Y + (double)d.Z * d.Z
+            > (double)InputLimits.MaxSweepDistance * InputLimits.MaxSweepDistance)
+        {
+            throw new ArgumentException("A sweep must not be longer than 192 m.", nameof(newPos));
         }
 
         Transition? t = sweep.Pool.Make();
@@ -86,7 +107,7 @@ public sealed partial class PhysicsObj
             ObjCell? cell = AdjustPosition(sweep, ref p, t.SpherePath.LocalSphere[0].Center);
             if (cell is null)
             {
-                GoToLostCell(p);
+                GoToLostCellInternal(p);
                 return SetPositionError.Ok;
             }
 
@@ -109,7 +130,7 @@ public sealed partial class PhysicsObj
             var result = default(TransitionResult);
             RetailSweep.Fill(t, ref result);
             sweep.LastTransition = t;
-            CommitTransition(result);
+            CommitTransitionInternal(result);
             return SetPositionError.Ok;
         }
         finally

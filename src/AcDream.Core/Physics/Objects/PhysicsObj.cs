@@ -257,7 +257,17 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>The position manager, or null until <see cref="MakePositionManager"/> (retail <c>position_manager</c>).</summary>
-    public PositionManager? PositionManager { get; private set; }
+    public PositionManager? PositionManager
+    {
+        get => _rare?.PositionManager;
+        private set
+        {
+            if (value is not null || _rare is not null)
+            {
+                Rare(true)!.PositionManager = value;
+            }
+        }
+    }
 
     /// <summary>Detection manager seam, or null.</summary>
     public IDetectionManager? DetectionManager
@@ -312,10 +322,20 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Sets the acceleration directly (retail <c>set_description</c> writes it); normally <see cref="CalcAcceleration"/> does.</summary>
-    /// <exception cref="ArgumentException">A component is NaN or infinite.</exception>
+    /// <param name="acceleration">m/s² in world axes: finite, magnitude at most <see cref="InputLimits.MaxAcceleration"/>
+    /// (1,000 m/s²).</param>
+    /// <exception cref="ArgumentException">A component is NaN or infinite, or the magnitude exceeds 1,000 m/s² (state
+    /// unchanged).</exception>
     public void SetAcceleration(Vector3 acceleration)
     {
         ThrowIfNotFinite(acceleration, nameof(acceleration));
+        // non-retail: the acceleration's bound (1e30 m/s² swept an object 1e28 m in one step)
+        if ((double)acceleration.X * acceleration.X + (double)acceleration.Y * acceleration.Y
+            + (double)acceleration.Z * acceleration.Z > (double)InputLimits.MaxAcceleration * InputLimits.MaxAcceleration)
+        {
+            throw new ArgumentException("Acceleration must not exceed 1,000 m/s².", nameof(acceleration));
+        }
+
         Touch();
         _acceleration = acceleration;
     }
@@ -336,6 +356,9 @@ public sealed partial class PhysicsObj
         public IParticleManager? ParticleManager;
         public IScriptManager? ScriptManager;
         public Extrapolation? Extrapolation;
+        public PhysicsObj? Parent;
+        public ChildList? Children;
+        public PositionManager? PositionManager;
     }
 
     private static void ThrowIfNotFinite(Vector3 v, string name)

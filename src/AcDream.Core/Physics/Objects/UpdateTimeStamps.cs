@@ -7,5 +7,8 @@ namespace AcDream.Core.Physics.Objects;
 [System.Runtime.CompilerServices.InlineArray(9)]
 internal struct UpdateTimeStamps
 {
+    /// <summary>Number of stamps (retail <c>update_times[9]</c>).</summary>
+    public const int Count = 9;
+
     private ushort _element0;
 }

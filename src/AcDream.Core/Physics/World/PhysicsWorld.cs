@@ -1,6 +1,7 @@
 using System;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Hooks;
+using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Scene;
@@ -27,14 +28,15 @@ public sealed partial class PhysicsWorld
     /// <param name="startTime">Initial client time, seconds.</param>
     /// <param name="profile">Time-slicing profile; <see cref="PhysicsProfile.Retail"/> when null.</param>
     /// <param name="hookPoolCapacity">Number of <see cref="FPHook"/>s preallocated so that fades do not allocate.</param>
-    /// <exception cref="ArgumentException"><paramref name="startTime"/> is NaN or infinite.</exception>
+    /// <exception cref="ArgumentException"><paramref name="startTime"/> is NaN, infinite or not within
+    /// ±<see cref="InputLimits.MaxClockTime"/> (2^40 s).</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="hookPoolCapacity"/> is negative.</exception>
+    /// <remarks>Valid clock times: |t| &lt; 2^40 s = 1,099,511,627,776 s, where a double's spacing (≤ 2^-13 s) still
+    /// resolves EPSILON and the 1/30 s gate (<see cref="InputLimits.MaxClockTime"/>).</remarks>
     // retail: CPhysics::CPhysics (acclient.c:311398) sets PhysicsTimer::curr_time = Timer::cur_time
     public PhysicsWorld(double startTime = 0.0, PhysicsProfile? profile = null, int hookPoolCapacity = 64)
     {
-        if (!double.IsFinite(startTime))
-        {
-            throw new ArgumentException("Start time must be finite.", nameof(startTime));
-        }
+        ThrowIfClockOutside(startTime, nameof(startTime));
 
         ArgumentOutOfRangeException.ThrowIfNegative(hookPoolCapacity);
         Profile = profile ?? PhysicsProfile.Retail;
@@ -233,23 +235,34 @@ public sealed partial class PhysicsWorld
     }
 
     /// <summary>Sets the client clock without ticking (retail: the client loop advancing <c>Timer::cur_time</c>).</summary>
-    /// <exception cref="ArgumentException"><paramref name="now"/> is NaN or infinite. The clock may go backwards (retail resyncs).</exception>
+    /// <param name="now">Client time, seconds: finite, |now| &lt; <see cref="InputLimits.MaxClockTime"/> (2^40 s).</param>
+    /// <exception cref="ArgumentException"><paramref name="now"/> is NaN, infinite or not within ±2^40 s (state unchanged).
+    /// The clock may go backwards (retail resyncs).</exception>
     /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick (the clock the tick is
     /// slicing would change under it); nothing changes.</exception>
     public void SetCurrentTime(double now)
     {
         ThrowIfInTick();
-        if (!double.IsFinite(now))
-        {
-            throw new ArgumentException("Time must be finite.", nameof(now));
-        }
-
+        ThrowIfClockOutside(now, nameof(now));
         CurrentTime = now;
     }
 
+    // non-retail: clock times are refused from 2^40 s on, where the double clock no longer resolves EPSILON (retail's clock
+    // would silently stop ticking near 1e15 s)
+    private static void ThrowIfClockOutside(double time, string paramName)
+    {
+        if (!InputLimits.IsClockTimeInDomain(time))
+        {
+            throw new ArgumentException("Clock time must be finite and within ±2^40 s (1,099,511,627,776 s).", paramName);
+        }
+    }
+
     /// <summary>Sets the client clock to <paramref name="now"/> and runs <see cref="UseTime"/>.</summary>
+    /// <param name="now">Client time, seconds: finite, |now| &lt; <see cref="InputLimits.MaxClockTime"/> = 2^40 s
+    /// (1,099,511,627,776 s, about 34,800 years); beyond it the double clock's spacing (2^-12 s and more) no longer resolves
+    /// EPSILON, and from about 1e15 s not even the 1/30 s gate.</param>
     /// <returns>True when the objects were updated (at least MinQuantum had passed).</returns>
-    /// <exception cref="ArgumentException"><paramref name="now"/> is NaN or infinite.</exception>
+    /// <exception cref="ArgumentException"><paramref name="now"/> is NaN, infinite or not within ±2^40 s (state unchanged).</exception>
     /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick (re-entrant tick); nothing
     /// changes and the tick in progress goes on.</exception>
     public bool Tick(double now)

@@ -14,6 +14,8 @@ namespace AcDream.Core.Physics.Collision.Primitives;
 /// is built (terrain vertices never move afterwards) and keeps the shared indices in <see cref="VertexIds"/>.</para>
 /// <para>The class is partial so that further retail polygon tests (sphere hits, walkable checks, crossed edges) can be
 /// added in their own files.</para>
+/// <para>Valid domain of the queries: any point, sphere or vector; they never change the polygon, and a non-finite input
+/// gives an answer, never an exception (the misuse suite calls each with NaN, ±∞, ±MaxValue, subnormal and −0).</para>
 /// </remarks>
 public sealed partial class Polygon
 {

@@ -33,12 +33,12 @@ public sealed class FreeSpaceSweep : CollisionSweep
         Position p = pos;
         if (!LandDefs.InboundValidCellId(p.ObjCellId) || ((p.ObjCellId & 0xFFFFu) < 0x100u && !p.TryAdjustToOutside()))
         {
-            obj.GoToLostCell(pos);
+            obj.GoToLostCellInternal(pos);
             return SetPositionError.Ok;
         }
 
         TransitionResult t = TransitionResult.FreeSpace(p);
-        obj.CommitTransition(t);
+        obj.CommitTransitionInternal(t);
         return SetPositionError.Ok;
     }
 }

@@ -130,7 +130,8 @@ public sealed class RetailSweep : CollisionSweep
     internal Transition? LastTransition { get; set; }
 
     /// <summary>Sweeps <paramref name="obj"/> in a pooled transition (see <see cref="PhysicsObj.RunTransition"/>).</summary>
-    /// <exception cref="ArgumentException">A position has a NaN or infinite origin (nothing is changed).</exception>
+    /// <exception cref="ArgumentException">A position is outside the position domain (<see cref="InputLimits"/>; nothing is
+    /// changed).</exception>
     internal Transition? RunTransition(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove)
     {
         ArgumentNullException.ThrowIfNull(obj);
@@ -138,6 +139,11 @@ public sealed class RetailSweep : CollisionSweep
     }
 
     /// <inheritdoc />
+    /// <exception cref="ArgumentNullException"><paramref name="obj"/> is null.</exception>
+    /// <exception cref="ArgumentException">A position is outside the position domain (<see cref="InputLimits"/>: unit
+    /// quaternion; origin finite, within ±65,536 m, outdoor x, y in [−192, 384]) or the sweep is longer than
+    /// <see cref="InputLimits.MaxSweepDistance"/> (192 m); nothing is changed. A position in no world cell (id 0,
+    /// 0xFFFFFFFF, a landblock outside the world) makes the sweep fail (false).</exception>
     // retail seam: CPhysicsObj::transition (acclient.c:320060), ported as PhysicsObj.RunTransition
     public override bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result)
     {
@@ -154,9 +160,14 @@ public sealed class RetailSweep : CollisionSweep
 
     /// <inheritdoc />
     /// <remarks>Scatter placement (SCATTER / RANDOMSCATTER) and the weenie's forced cells are not ported.</remarks>
+    /// <exception cref="ArgumentNullException"><paramref name="obj"/> is null.</exception>
+    /// <exception cref="ArgumentException"><paramref name="pos"/> is outside the position domain (<see cref="InputLimits"/>);
+    /// nothing is changed.</exception>
     public override SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags)
     {
         ArgumentNullException.ThrowIfNull(obj);
+        // non-retail: the position domain, checked before the object can be sent to the lost cell
+        InputLimits.ThrowIfOutside(pos, nameof(pos));
         return obj.SetPositionInternal(this, pos, flags);
     }
 

@@ -76,6 +76,8 @@ public interface IPartArray
     Frame GetPartFrame(int index);
 
     /// <summary>Applies a uniform scale to every part (retail <c>CPartArray::SetScaleInternal</c>).</summary>
+    /// <param name="scale">The scale; the object passes only values in [<see cref="InputLimits.MinScale"/>,
+    /// <see cref="InputLimits.MaxScale"/>].</param>
     void SetScale(float scale);
 
     /// <summary>Applies a translucency to every part (retail <c>CPartArray::SetTranslucencyInternal</c>).</summary>

@@ -19,16 +19,23 @@ public sealed class PhysicsPart
 
     /// <summary>Creates a part.</summary>
     /// <exception cref="ArgumentNullException"><paramref name="gfxObj"/> is null.</exception>
-    /// <exception cref="ArgumentException">The position or scale is not valid (non-finite, or a scale component ≤ 0).</exception>
+    /// <param name="gfxObj">The graphics object's physics.</param>
+    /// <param name="pos">Where the part is: a finite origin and a unit quaternion.</param>
+    /// <param name="scale">The part's scale: each component in [<see cref="InputLimits.MinScale"/>,
+    /// <see cref="InputLimits.MaxScale"/>] = [0.01, 100].</param>
+    /// <exception cref="ArgumentException">The position or scale is not valid (non-finite position or rotation, or a scale
+    /// component outside [0.01, 100]).</exception>
     public PhysicsPart(GfxObjPhysics gfxObj, in Position pos, Vector3 scale)
     {
         ArgumentNullException.ThrowIfNull(gfxObj);
+        // non-retail: the object scale's domain for each component (a subnormal one divides the cached spheres to infinity)
+        if (!InputLimits.IsScaleInDomain(scale.X) || !InputLimits.IsScaleInDomain(scale.Y) || !InputLimits.IsScaleInDomain(scale.Z))
+        {
+            throw new ArgumentException("Each scale component must be in [0.01, 100].", nameof(scale));
+        }
+
         GfxObj = gfxObj;
         SetPosition(pos);
-        if (!VectorMath.IsFinite(scale) || scale.X <= 0f || scale.Y <= 0f || scale.Z <= 0f)
-        {
-            throw new ArgumentException("The scale must be finite and positive.", nameof(scale));
-        }
 
         GfxObjScale = scale;
     }

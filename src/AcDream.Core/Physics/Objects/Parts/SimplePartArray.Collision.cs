@@ -11,30 +11,62 @@ public sealed partial class SimplePartArray : IPartCollision
 {
     private CylSphere[] _cylSpheres = Array.Empty<CylSphere>();
     // The parts with a physics BSP and their local frames, null until SetPhysicsParts (most objects have none).
-    private BspParts? _bspParts;
+    // With the sorting sphere, in one side object created when either is set (at setup, never in a tick), so that an
+    // object with neither pays one reference.
+    private CollisionExtras? _extras;
 
     /// <inheritdoc />
     public ReadOnlySpan<CylSphere> CylSpheres => _cylSpheres;
 
     /// <inheritdoc />
-    /// <remarks>Default <see cref="Sphere.Dummy"/>.</remarks>
-    public Sphere SortingSphere { get; set; } = Sphere.Dummy;
+    /// <remarks>Default <see cref="Sphere.Dummy"/>. Valid domain: a finite centre and a positive finite radius.</remarks>
+    /// <exception cref="ArgumentException">The centre is not finite or the radius not positive and finite (state unchanged).</exception>
+    public Sphere SortingSphere
+    {
+        get => _extras?.SortingSphere ?? Sphere.Dummy;
+        set
+        {
+            if (!VectorMath.IsFinite(value.Center) || !float.IsFinite(value.Radius) || !(value.Radius > 0f))
+            {
+                throw new ArgumentException("The sorting sphere needs a finite centre and a positive finite radius.", nameof(value));
+            }
+
+            Owner?.Touch();
+            (_extras ??= new CollisionExtras()).SortingSphere = value;
+        }
+    }
+
 
     /// <inheritdoc />
     /// <remarks>The parts given to <see cref="SetPhysicsParts"/> (none by default).</remarks>
-    public int NumCollisionParts => _bspParts?.Parts.Length ?? 0;
+    public int NumCollisionParts => _extras?.Bsp?.Parts.Length ?? 0;
 
     /// <summary>
     /// Gives the object parts with a physics BSP: each part's graphics-object physics, its frame relative to the object and
     /// its scale. The object also needs <see cref="PhysicsState.HasPhysicsBsp"/> for sweeps to test them (retail
     /// <c>CPartArray::CacheHasPhysicsBSP</c>).
     /// </summary>
-    /// <exception cref="ArgumentException">The spans differ in length, or a frame or scale is not valid.</exception>
+    /// <param name="gfxObjs">The parts' graphics-object physics.</param>
+    /// <param name="localFrames">Each part's frame relative to the object: a unit quaternion, each origin component within
+    /// ±<see cref="InputLimits.MaxChildOffset"/> (192 m).</param>
+    /// <param name="scales">Each part's scale: components in [<see cref="InputLimits.MinScale"/>,
+    /// <see cref="InputLimits.MaxScale"/>] = [0.01, 100].</param>
+    /// <exception cref="ArgumentException">The spans differ in length, or a frame or scale is outside its domain (state
+    /// unchanged).</exception>
     public void SetPhysicsParts(ReadOnlySpan<GfxObjPhysics> gfxObjs, ReadOnlySpan<Frame> localFrames, ReadOnlySpan<System.Numerics.Vector3> scales)
     {
         if (gfxObjs.Length != localFrames.Length || gfxObjs.Length != scales.Length)
         {
             throw new ArgumentException("One frame and one scale per part.", nameof(localFrames));
+        }
+
+        for (int i = 0; i < localFrames.Length; i++)
+        {
+            // non-retail: a part's offset has the child frame's domain
+            if (!InputLimits.IsChildFrameInDomain(localFrames[i]))
+            {
+                throw new ArgumentException("Part frames need a unit quaternion and an offset within ±192 m.", nameof(localFrames));
+            }
         }
 
         var parts = new PhysicsPart[gfxObjs.Length];
@@ -43,7 +75,7 @@ public sealed partial class SimplePartArray : IPartCollision
             parts[i] = new PhysicsPart(gfxObjs[i], new Position(CellId, Frame.Combined(Frame, localFrames[i])), scales[i]);
         }
 
-        _bspParts = new BspParts(parts, localFrames.ToArray());
+        (_extras ??= new CollisionExtras()).Bsp = new BspParts(parts, localFrames.ToArray());
     }
 
     /// <summary>Replaces the cylinder spheres (a setup's list; object-local, unscaled).</summary>
@@ -100,7 +132,7 @@ public sealed partial class SimplePartArray : IPartCollision
     TransitionState IPartCollision.FindPartObjCollisions(int index, Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
-        BspParts? bsp = _bspParts;
+        BspParts? bsp = _extras?.Bsp;
         if (bsp is null || (uint)index >= (uint)bsp.Parts.Length)
         {
             return TransitionState.Ok;
@@ -112,4 +144,11 @@ public sealed partial class SimplePartArray : IPartCollision
     }
 
     private sealed record BspParts(PhysicsPart[] Parts, Frame[] Frames);
+
+    private sealed class CollisionExtras
+    {
+        public Sphere SortingSphere = Sphere.Dummy;
+
+        public BspParts? Bsp;
+    }
 }

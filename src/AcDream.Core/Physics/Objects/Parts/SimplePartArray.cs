@@ -43,7 +43,6 @@ public sealed partial class SimplePartArray : IPartArray
     /// <exception cref="ArgumentException">A centre or radius is NaN or infinite, or a radius is not positive.</exception>
     public void SetSpheres(ReadOnlySpan<Sphere> spheres)
     {
-        Owner?.Touch();
         for (int i = 0; i < spheres.Length; i++)
         {
             Sphere s = spheres[i];
@@ -53,6 +52,7 @@ public sealed partial class SimplePartArray : IPartArray
             }
         }
 
+        Owner?.Touch();
         _spheres = spheres.ToArray();
         UpdateObstacleReach();
     }
@@ -104,14 +104,25 @@ public sealed partial class SimplePartArray : IPartArray
         VectorMath.IsFinite(value) ? value : throw new ArgumentException("Part array vectors must be finite.", nameof(value));
 
     /// <summary>The sequence's velocity in the object's local axes, m/s (retail <c>CSequence::velocity</c>).</summary>
-    /// <exception cref="ArgumentException">A component is NaN or infinite (state unchanged).</exception>
+    /// <remarks>Valid domain: finite, speed |v| at most <see cref="InputLimits.MaxSequenceSpeed"/> (50 m/s, retail's max
+    /// velocity), so that one 0.2 s step moves the object at most 10 m (× scale) and its sweep re-homes it.</remarks>
+    /// <exception cref="ArgumentException">A component is NaN or infinite, or the speed exceeds 50 m/s (state unchanged;
+    /// retail's sequence velocity comes from the motion tables unchecked).</exception>
     public Vector3 SequenceVelocity
     {
         get => _sequenceVelocity;
         set
         {
+            Finite(value);
+            // non-retail: the animation velocity's bound (an unbounded one moved a walker 8,000 km in one tick)
+            if ((double)value.X * value.X + (double)value.Y * value.Y + (double)value.Z * value.Z
+                > (double)InputLimits.MaxSequenceSpeed * InputLimits.MaxSequenceSpeed)
+            {
+                throw new ArgumentException("Sequence velocity must not exceed 50 m/s.", nameof(value));
+            }
+
             Owner?.Touch();
-            _sequenceVelocity = Finite(value);
+            _sequenceVelocity = value;
         }
     }
 
@@ -122,8 +133,9 @@ public sealed partial class SimplePartArray : IPartArray
         get => _sequenceOmega;
         set
         {
+            Finite(value);
             Owner?.Touch();
-            _sequenceOmega = Finite(value);
+            _sequenceOmega = value;
         }
     }
 
@@ -257,8 +269,13 @@ public sealed partial class SimplePartArray : IPartArray
     public Frame GetPartFrame(int index) => _frame;
 
     /// <inheritdoc />
-    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
-    public void SetScale(float scale) => Scale = Finite(scale);
+    /// <exception cref="ArgumentException">The scale is outside [<see cref="InputLimits.MinScale"/>,
+    /// <see cref="InputLimits.MaxScale"/>] = [0.01, 100] (also NaN, ±∞, 0, negative); state unchanged.</exception>
+    public void SetScale(float scale)
+    {
+        InputLimits.ThrowIfScaleOutside(scale, nameof(scale));
+        Scale = scale;
+    }
 
     /// <inheritdoc />
     /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>

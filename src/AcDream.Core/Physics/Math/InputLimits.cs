@@ -1,0 +1,157 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics.Math;
+
+/// <summary>
+/// The valid domains of the values the public API accepts (positions, frames, scales, clock times, animation velocity): a
+/// value outside them is refused with an <see cref="ArgumentException"/> and the state left as it was, so that no accepted
+/// value can make a later tick throw or write a NaN or an infinity. Retail accepts any float here; every bound is a
+/// deliberate divergence (docs/divergences.md, "Value domains").
+/// </summary>
+public static class InputLimits
+{
+    /// <summary>
+    /// Largest magnitude of any origin component, metres: 2^16 = 65,536 m, beyond the world's side of 255 × 192 = 48,960 m, so
+    /// a landblock-local origin of any real place fits with room to spare. Applies to every position, frame and child frame.
+    /// </summary>
+    public const float MaxCoordinate = 65536f;
+
+    /// <summary>
+    /// How far an outdoor position's x and y may lie outside its landblock, metres (one landblock, 192 m): an outdoor origin
+    /// has x and y in [−192, 384] and is re-homed into the landblock that contains it (x, y in [0, 192)).
+    /// </summary>
+    public const float OutdoorMargin = LandDefs.BlockLength;
+
+    /// <summary>Largest magnitude of a child frame's offset from its parent (or the parent's part), metres: 192 m.</summary>
+    public const float MaxChildOffset = LandDefs.BlockLength;
+
+    /// <summary>Smallest object scale accepted (unitless): 0.01. A smaller sphere would make the sweep's step count
+    /// (distance / radius) explode.</summary>
+    public const float MinScale = 0.01f;
+
+    /// <summary>Largest object scale accepted (unitless): 100.</summary>
+    public const float MaxScale = 100f;
+
+    /// <summary>
+    /// Exclusive bound on the magnitude of a clock time, seconds: 2^40 = 1,099,511,627,776 s (about 34,800 years). Below it a
+    /// double's spacing is at most 2^-13 s = 1.22e-4 s, finer than EPSILON (2e-4 s, the shortest dt retail runs a step for)
+    /// and than the 1/30 s world gate; at 2^40 it is 2^-12 s = 2.44e-4 s, coarser than EPSILON; near 1e15 s it is 0.125 s and
+    /// the 1/30 s gate no longer resolves at all.
+    /// </summary>
+    public const double MaxClockTime = 1099511627776.0;
+
+    /// <summary>Largest speed of an animation (sequence) velocity, m/s: retail's <see cref="PhysicsGlobals.MaxVelocity"/>
+    /// (50 m/s), the clamp retail applies to the physics velocity in <c>set_velocity</c> and
+    /// <c>UpdatePhysicsInternal</c>.</summary>
+    public const float MaxSequenceSpeed = PhysicsGlobals.MaxVelocity;
+
+    /// <summary>
+    /// Largest magnitude of an acceleration set directly, m/s²: 1,000 (about 100 g; gravity is 9.8). With the 50 m/s velocity
+    /// clamp at the start of every step, one step of at most 0.2 s then ends below 50 + 1,000 × 0.2 = 250 m/s and moves the
+    /// object at most 50 × 0.2 + 1,000 × 0.2² / 2 = 30 m: within <see cref="OutdoorMargin"/>.
+    /// </summary>
+    public const float MaxAcceleration = 1000f;
+
+    /// <summary>Longest sweep accepted, metres: one landblock, 192 m (at most 384 transition steps of a 0.5 m sphere). The
+    /// engine's own steps move at most 30 m (<see cref="MaxAcceleration"/>).</summary>
+    public const float MaxSweepDistance = LandDefs.BlockLength;
+
+    /// <summary>True when <paramref name="cellId"/>'s low word is an outdoor cell (1..0x40) or the landblock (0xFFFF): the
+    /// ids <c>store_position</c> re-homes to the outdoor cell under the origin.</summary>
+    internal static bool IsOutdoorOrBlock(uint cellId)
+    {
+        uint c = cellId & 0xFFFFu;
+        return (c >= LandDefs.FirstOutdoorCell && c <= LandDefs.LastOutdoorCell) || c == 0xFFFFu;
+    }
+
+    /// <summary>True when <paramref name="origin"/> is finite and inside the domain of a position in <paramref name="cellId"/>:
+    /// every component within ±<see cref="MaxCoordinate"/>, and for an outdoor (or block) id x and y in
+    /// [−<see cref="OutdoorMargin"/>, 192 + <see cref="OutdoorMargin"/>].</summary>
+    internal static bool IsOriginInDomain(uint cellId, Vector3 origin)
+    {
+        if (!(System.Math.Abs(origin.X) <= MaxCoordinate && System.Math.Abs(origin.Y) <= MaxCoordinate
+              && System.Math.Abs(origin.Z) <= MaxCoordinate))
+        {
+            return false; // also NaN
+        }
+
+        if (IsOutdoorOrBlock(cellId))
+        {
+            const float lo = -OutdoorMargin;
+            const float hi = LandDefs.BlockLength + OutdoorMargin;
+            return origin.X >= lo && origin.X <= hi && origin.Y >= lo && origin.Y <= hi;
+        }
+
+        return true;
+    }
+
+    /// <summary>True when the frame's quaternion is a unit quaternion (retail <c>Frame::IsValid</c>'s test: no NaN,
+    /// |q|² within 5 × EPSILON of 1), which refuses the all-zero rotation of <c>default(Frame)</c>.</summary>
+    internal static bool IsRotationValid(in Frame f) => f.IsValid(); // the origin's NaN test there is repeated by the domain
+
+    /// <summary>True when <paramref name="p"/> is inside the position domain (origin, rotation).</summary>
+    internal static bool IsPositionInDomain(in Position p) => IsOriginInDomain(p.ObjCellId, p.Frame.Origin) && IsRotationValid(p.Frame);
+
+    /// <summary>Throws when <paramref name="p"/> is outside the position domain.</summary>
+    /// <exception cref="ArgumentException">The origin or the rotation is outside the domain.</exception>
+    internal static void ThrowIfOutside(in Position p, string paramName)
+    {
+        if (!IsPositionInDomain(p))
+        {
+            throw new ArgumentException(
+                "Position must have a unit quaternion and a finite origin within ±65,536 m (outdoor: x, y in [-192, 384]).",
+                paramName);
+        }
+    }
+
+    /// <summary>Throws when <paramref name="frame"/> is outside the domain of a frame of an object in <paramref name="cellId"/>.</summary>
+    /// <exception cref="ArgumentException">The origin or the rotation is outside the domain.</exception>
+    internal static void ThrowIfOutside(uint cellId, in Frame frame, string paramName)
+    {
+        if (!IsOriginInDomain(cellId, frame.Origin) || !IsRotationValid(frame))
+        {
+            throw new ArgumentException(
+                "Frame must have a unit quaternion and a finite origin within ±65,536 m (outdoor: x, y in [-192, 384]).",
+                paramName);
+        }
+    }
+
+    /// <summary>True when <paramref name="frame"/> is a valid child frame: unit quaternion, each origin component within
+    /// ±<see cref="MaxChildOffset"/>.</summary>
+    internal static bool IsChildFrameInDomain(in Frame frame) =>
+        System.Math.Abs(frame.Origin.X) <= MaxChildOffset && System.Math.Abs(frame.Origin.Y) <= MaxChildOffset
+        && System.Math.Abs(frame.Origin.Z) <= MaxChildOffset && IsRotationValid(frame);
+
+    /// <summary>True when <paramref name="scale"/> is in [<see cref="MinScale"/>, <see cref="MaxScale"/>].</summary>
+    internal static bool IsScaleInDomain(float scale) => scale >= MinScale && scale <= MaxScale;
+
+    /// <summary>Throws when <paramref name="scale"/> is outside [<see cref="MinScale"/>, <see cref="MaxScale"/>].</summary>
+    /// <exception cref="ArgumentException">The scale is outside the domain (also NaN, infinities, zero and negatives).</exception>
+    internal static void ThrowIfScaleOutside(float scale, string paramName)
+    {
+        if (!IsScaleInDomain(scale))
+        {
+            throw new ArgumentException("Scale must be in [0.01, 100].", paramName);
+        }
+    }
+
+    /// <summary>True when <paramref name="time"/> is a clock time in (−<see cref="MaxClockTime"/>, <see cref="MaxClockTime"/>).</summary>
+    internal static bool IsClockTimeInDomain(double time) => System.Math.Abs(time) < MaxClockTime;
+
+    /// <summary>True when <paramref name="n"/> is finite and, when <paramref name="valid"/>, of unit length (|n|² within
+    /// 5 × EPSILON of 1, the tolerance of <see cref="Frame.IsValid"/>).</summary>
+    internal static bool IsNormalInDomain(Vector3 n, bool valid)
+    {
+        if (!IsFinite(n))
+        {
+            return false;
+        }
+
+        double m = (double)n.X * n.X + (double)n.Y * n.Y + (double)n.Z * n.Z;
+        return !valid || System.Math.Abs(m - 1.0) <= PhysicsGlobals.Epsilon * 5.0;
+    }
+
+    /// <summary>True when every component is finite.</summary>
+    internal static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+}

@@ -1,0 +1,74 @@
+using System.Numerics;
+using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
+
+namespace AcDream.Core.Tests.Stability.Misuse;
+
+/// <summary>
+/// The misuse suite's small scene: flat terrain (landblock 0x8080 at height index 10, the one-metre table: z = 10 m), the retail
+/// sweep, a walker at (100, 100) (one 0.5 m sphere, a movement manager, walking 1 m/s, the player) with every position manager in
+/// use, a resting second object 3 m east, a dormant third object (no movement manager) 6 m west, and a fade in progress. Built fresh for every case.
+/// </summary>
+internal sealed class MisuseScene
+{
+    /// <summary>Tick length, seconds (one step per tick).</summary>
+    public const double Dt = 0.05;
+
+    public MisuseScene()
+    {
+        Terrain = SweepScene.Terrain();
+        SweepScene.AddBlock(Terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 10);
+        World = SweepScene.Physics(Terrain, out RetailSweep sweep);
+        Sweep = sweep;
+        Walker = SweepScene.Walker(World, At(100f, 100f), id: 1);
+        WalkerParts = (SimplePartArray)Walker.PartArray!;
+        Other = SweepScene.Walker(World, At(103f, 100f), id: 2);
+        Resting = World.CreateObject(3);
+        Resting.PartArray = Support.Shared.Walkers.OneSphere();
+        Resting.EnterWorld(At(94f, 100f));
+        World.Player = Walker;
+        WalkerParts.SequenceVelocity = new Vector3(0f, 1f, 0f);
+        Walker.SetTranslucency(0.5f, 1.0);
+        Walker.InterpolateTo(At(100f, 102f), false);
+        Walker.ConstrainTo(Walker.Position, 10f, 50f);
+        Walker.PositionManager!.StickTo(2u, 0.5f, 1.8f);
+        Tick(4);
+    }
+
+    public TerrainWorld Terrain { get; }
+
+    public PhysicsWorld World { get; }
+
+    public RetailSweep Sweep { get; }
+
+    public PhysicsObj Walker { get; }
+
+    public SimplePartArray WalkerParts { get; }
+
+    public PhysicsObj Other { get; }
+
+    /// <summary>A resting object with no movement manager, 6 m west of the walker: dormant once the scene has seen it idle.</summary>
+    public PhysicsObj Resting { get; }
+
+    /// <summary>A position on the ground (z = 10 m) of landblock 0x8080 at (x, y), in the outdoor cell that contains it.</summary>
+    public static Position At(float x, float y)
+    {
+        var p = new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 0, 0), new Vector3(x, y, 10f));
+        p.AdjustToOutside();
+        return p;
+    }
+
+    /// <summary>Ticks <paramref name="n"/> times by <see cref="Dt"/>.</summary>
+    public void Tick(int n)
+    {
+        for (int i = 0; i < n; i++)
+        {
+            World.Tick(World.CurrentTime + Dt);
+        }
+    }
+}
