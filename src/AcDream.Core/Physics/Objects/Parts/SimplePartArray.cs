@@ -288,14 +288,7 @@ public sealed partial class SimplePartArray : IPartArray
 
     /// <inheritdoc />
     /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
-    public void SetPartTranslucency(uint part, float translucency)
-    {
-        Finite(translucency);
-        if (part < (uint)NumParts)
-        {
-            _partValues[(part * PartValues) + Translucency0] = translucency;
-        }
-    }
+    public void SetPartTranslucency(uint part, float translucency) => SetPart(Translucency0, part, translucency);
 
     /// <inheritdoc />
     /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
@@ -308,14 +301,7 @@ public sealed partial class SimplePartArray : IPartArray
 
     /// <inheritdoc />
     /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
-    public void SetPartLuminosity(uint part, float luminosity)
-    {
-        Finite(luminosity);
-        if (part < (uint)NumParts)
-        {
-            _partValues[(part * PartValues) + Luminosity0] = luminosity;
-        }
-    }
+    public void SetPartLuminosity(uint part, float luminosity) => SetPart(Luminosity0, part, luminosity);
 
     /// <inheritdoc />
     /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
@@ -328,12 +314,15 @@ public sealed partial class SimplePartArray : IPartArray
 
     /// <inheritdoc />
     /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
-    public void SetPartDiffusion(uint part, float diffusion)
+    public void SetPartDiffusion(uint part, float diffusion) => SetPart(Diffusion0, part, diffusion);
+
+    // Sets value `channel` of one part (a part that does not exist is ignored, as retail's part loop skips it).
+    private void SetPart(int channel, uint part, float value)
     {
-        Finite(diffusion);
+        Finite(value);
         if (part < (uint)NumParts)
         {
-            _partValues[(part * PartValues) + Diffusion0] = diffusion;
+            _partValues[(part * PartValues) + channel] = value;
         }
     }
 
