@@ -4,6 +4,9 @@ using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;
@@ -18,6 +21,37 @@ public class ObjectCollisionGeometryTests
         // report_collision_end drops records older than 1.0 s (acclient.c:321712).
         Assert.Equal(1.0, PhysicsObj.CollisionRecordLifetime);
         Assert.Equal(0x3FF0000000000000L, BitConverter.DoubleToInt64Bits(PhysicsObj.CollisionRecordLifetime));
+    }
+
+    [Fact]
+    public void ShadowList_DoublesWhenFull_KeepingRetailOrder()
+    {
+        // A cell's list starts with 5 slots (one retail growth step). Retail's add_shadow_object then grows by 5
+        // (acclient.c:346804): 10, 15, 20. Ours doubles: the 6th shadow makes 10 slots, the 11th 20, the 21st 40; the
+        // shadows stay in the order they were added, as retail lists them.
+        var terrain = new TerrainWorld(TerrainTestData.IdentityTable());
+        terrain.AddLandBlock(0xA9B4FFFFu, new byte[81], TerrainTestData.Terrain(1));
+        LandCell cell = terrain.GetLandCell(0xA9B40001u)!;
+        var world = new PhysicsWorld();
+        var shadows = new ShadowObj[21];
+        int[] capacityAfter = new int[22];
+        for (int i = 0; i < shadows.Length; i++)
+        {
+            shadows[i] = new ShadowObj(world.CreateObject((uint)(i + 1)));
+            cell.AddShadowObject(shadows[i]);
+            capacityAfter[i + 1] = cell.ShadowCapacity;
+        }
+
+        Assert.Equal(5, capacityAfter[5]);
+        Assert.Equal(10, capacityAfter[6]);
+        Assert.Equal(10, capacityAfter[10]);
+        Assert.Equal(20, capacityAfter[11]);
+        Assert.Equal(40, capacityAfter[21]);
+        for (int i = 0; i < shadows.Length; i++)
+        {
+            Assert.Same(shadows[i], cell.ShadowObjects[i]);
+            Assert.Same(cell, shadows[i].Cell);
+        }
     }
 
     [Fact]

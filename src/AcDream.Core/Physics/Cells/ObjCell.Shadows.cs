@@ -19,13 +19,16 @@ public abstract partial class ObjCell
     /// <summary>The shadows in the cell, <see cref="NumShadowObjects"/> long, in retail's list order.</summary>
     internal ReadOnlySpan<ShadowObj> ShadowObjects => _shadowObjects.AsSpan(0, NumShadowObjects);
 
+    /// <summary>Slots of the shadow list (its capacity).</summary>
+    internal int ShadowCapacity => _shadowObjects.Length;
+
     /// <summary>Largest shadow capacity <see cref="ReserveShadowCapacity"/> accepts: 65,536, far above any real cell's crowd.</summary>
     public const int MaxShadowCapacity = 65536;
 
     /// <summary>
     /// Makes room for <paramref name="capacity"/> shadows without growing later (for a client that knows how crowded a cell
-    /// will be, e.g. when its landblock loads). The list otherwise grows by <see cref="ShadowListGrowth"/> only past its
-    /// largest size so far, and never shrinks.
+    /// will be, e.g. when its landblock loads). The list otherwise doubles only past its largest size so far, and never
+    /// shrinks.
     /// </summary>
     /// <param name="capacity">Shadows to make room for: 0 ..= <see cref="MaxShadowCapacity"/> (65,536).</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="capacity"/> is negative or above
@@ -42,15 +45,18 @@ public abstract partial class ObjCell
     }
 
     /// <summary>Lists <paramref name="shadow"/> in the cell and points it at the cell.</summary>
-    /// <remarks>The list grows by <see cref="ShadowListGrowth"/> when full and never shrinks (retail shrinks a list with
-    /// more than 10 spare slots; keeping the capacity keeps the tick allocation-free).</remarks>
+    /// <remarks>When full the list doubles (at least <see cref="ShadowListGrowth"/>) and it never shrinks (retail grows by 5
+    /// and shrinks a list with more than 10 spare slots). Only the capacity differs: the shadows and their order are
+    /// retail's, and a crowd that keeps reaching new densities allocates a logarithmic number of times instead of once per
+    /// five walkers.</remarks>
     // retail: CObjCell::add_shadow_object (acclient.c:346804)
     internal void AddShadowObject(ShadowObj shadow)
     {
         ArgumentNullException.ThrowIfNull(shadow);
         if (NumShadowObjects >= _shadowObjects.Length)
         {
-            Array.Resize(ref _shadowObjects, _shadowObjects.Length + ShadowListGrowth);
+            // non-retail: doubling capacity (retail: + 5); unobservable but in allocations
+            Array.Resize(ref _shadowObjects, System.Math.Max(_shadowObjects.Length * 2, ShadowListGrowth));
         }
 
         _shadowObjects[NumShadowObjects++] = shadow;
