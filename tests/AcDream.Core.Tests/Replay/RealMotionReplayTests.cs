@@ -3,7 +3,6 @@ using System.Globalization;
 using System.IO;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Tests.Replay.Harness;
-using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
 using Xunit.Abstractions;

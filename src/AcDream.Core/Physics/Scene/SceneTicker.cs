@@ -34,8 +34,8 @@ internal sealed partial class SceneTicker
     // Reading ahead (VisitAwakeObjects): while an object is visited, the object 2 x LookAhead places on has its own fields
     // read and the one LookAhead places on its part array's, so that their memory is on its way by the time they are visited.
     // Objects are visited by id but lie in memory in creation order; created in random id order, each visit would otherwise
-    // wait for its memory (100,000 movers: 3.2 times the cost per object of the same movers created in id order, 1.75 times
-    // with reading ahead, CreationOrderTickBenchmarks). The reads change nothing; their sum goes to _lookAheadSink only so
+    // wait for its memory (100,000 movers: 3.2 times the cost per object of the same movers created in id order, about 2
+    // with reading ahead; CreationOrderTickBenchmarks, docs/performance.md). The reads change nothing; their sum goes to _lookAheadSink only so
     // that they are not dropped.
     private const int LookAhead = 6;
     private int _lookAheadSink;

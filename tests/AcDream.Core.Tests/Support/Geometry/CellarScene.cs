@@ -7,7 +7,6 @@ using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Math;
 using AcDream.Core.Physics.Objects.Parts;
-using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Tests.Support.Shared;
 using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
