@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Scene;
@@ -33,7 +34,7 @@ public class SceneRestingObjectsBenchmarks
     /// stays 51 m long whatever the speed.</summary>
     internal float PlayerSpeed { get; set; } = 2f;
 
-    private int LineLegTicks => System.Math.Max(1, (int)System.Math.Round(51.0 / (PlayerSpeed * 0.034)));
+    private int LineLegTicks => Math.Max(1, (int)Math.Round(51.0 / (PlayerSpeed * 0.034)));
 
     /// <summary>Number of resting or static objects besides the 100 movers.</summary>
     [Params(0, 10_000, 100_000)]

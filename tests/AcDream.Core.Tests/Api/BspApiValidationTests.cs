@@ -3,7 +3,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Tests.Support;
 using Xunit;

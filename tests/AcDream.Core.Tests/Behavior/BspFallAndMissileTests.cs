@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;

@@ -1,9 +1,10 @@
+using System;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
@@ -40,7 +41,7 @@ public class BspObjectCollisionTests
         SweepScene.SetWalk(c, new Vector3(0f, 2f, 0f));
 
         float maxX = 0f;
-        SweepScene.Run(world, 60, _ => maxX = System.Math.Max(maxX, c.Position.Frame.Origin.X));
+        SweepScene.Run(world, 60, _ => maxX = Math.Max(maxX, c.Position.Frame.Origin.X));
 
         // The walker's sphere (r = 0.5, centre 0.5 above the origin) may come no closer to the face x = 103.5 than its
         // radius: the origin stays at x <= 103.0; the box is 1.2 m high (> the 0.6 m step up), so it does not climb it.
@@ -62,7 +63,7 @@ public class BspObjectCollisionTests
         SweepScene.SetWalk(c, new Vector3(0f, 2f, 0f));
 
         float minX = float.MaxValue;
-        SweepScene.Run(world, 60, _ => minX = System.Math.Min(minX, c.Position.Frame.Origin.X));
+        SweepScene.Run(world, 60, _ => minX = Math.Min(minX, c.Position.Frame.Origin.X));
 
         Assert.True(minX >= 106.0f - 0.001f, $"min x {minX}");
         Assert.True(c.Position.Frame.Origin.X < 106.15f);

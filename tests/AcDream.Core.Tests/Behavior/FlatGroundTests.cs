@@ -1,6 +1,7 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
@@ -67,8 +68,8 @@ public class FlatGroundTests
             Vector3 o = obj.Position.Frame.Origin;
             Assert.Equal(20f, o.Z);
             Assert.True((obj.TransientState & (TransientState.Contact | TransientState.OnWalkable)) == (TransientState.Contact | TransientState.OnWalkable));
-            minX = System.Math.Min(minX, o.X);
-            maxX = System.Math.Max(maxX, o.X);
+            minX = Math.Min(minX, o.X);
+            maxX = Math.Max(maxX, o.X);
         });
 
         // It really walked: the circle's diameter is 2 * 6.24 = 12.48 m (each 0.05 s step is a 0.156 m chord).

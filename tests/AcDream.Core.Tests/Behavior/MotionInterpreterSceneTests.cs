@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
@@ -96,7 +97,7 @@ public class MotionInterpreterSceneTests
         int airborne = 0;
         SweepScene.Run(world, 60, _ =>
         {
-            top = System.Math.Max(top, player.Position.Frame.Origin.Z);
+            top = Math.Max(top, player.Position.Frame.Origin.Z);
             if ((player.TransientState & TransientState.OnWalkable) == 0)
             {
                 airborne++;

@@ -1,7 +1,8 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
@@ -26,8 +27,8 @@ public class ObstacleCollisionTests
         SweepScene.Run(world, 80, _ =>
         {
             Vector3 o = c.Position.Frame.Origin;
-            maxZ = System.Math.Max(maxZ, o.Z);
-            if (System.Math.Abs(o.X - 104f) < 0.5f)
+            maxZ = Math.Max(maxZ, o.Z);
+            if (Math.Abs(o.X - 104f) < 0.5f)
             {
                 // Over the centre the creature stands on the top disc (flat contact plane at 20.4).
                 Assert.Equal(20.4f, o.Z, 3);

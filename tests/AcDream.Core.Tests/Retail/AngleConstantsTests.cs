@@ -1,5 +1,5 @@
 using System;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using Xunit;
 

@@ -3,10 +3,9 @@ using System.Numerics;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
 using Xunit;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Tests.Retail;
 
@@ -149,7 +148,7 @@ public class BspQueryTests
         var q = new Quaternion(0f, 0f, MathF.Sin(MathF.PI / 4f), MathF.Cos(MathF.PI / 4f));
         var from = new Position(0x80800001u, new Frame(new Vector3(10f, 0f, 0f), q));
         var to = new Position(0x80800001u, Vector3.Zero);
-        Plane g = PlaneSpace.LocalToGlobal(to, from, new Plane(new Vector3(1f, 0f, 0f), -2f));
+        CollisionPlane g = PlaneSpace.LocalToGlobal(to, from, new CollisionPlane(new Vector3(1f, 0f, 0f), -2f));
         Assert.Equal(0f, g.N.X, 6);
         Assert.Equal(1f, g.N.Y, 6);
         Assert.Equal(0f, g.N.Z, 6);

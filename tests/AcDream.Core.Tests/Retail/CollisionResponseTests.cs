@@ -3,13 +3,12 @@ using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 using Xunit;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Tests.Retail;
 
@@ -104,7 +103,7 @@ public class CollisionResponseTests
         t.ValidateTransition(TransitionState.Collided);
         Assert.Equal(3, t.CollisionInfo.FramesStationaryFall);
         Assert.True(t.CollisionInfo.ContactPlaneValid);
-        Assert.Equal(new Plane(new Vector3(0f, 0f, 1f), -30f), t.CollisionInfo.ContactPlane);
+        Assert.Equal(new CollisionPlane(new Vector3(0f, 0f, 1f), -30f), t.CollisionInfo.ContactPlane);
         Assert.True(t.CollisionInfo.CollidedWithEnvironment);
         Assert.True((t.ObjectInfo.State & ObjectInfoState.OnWalkable) != 0);
     }

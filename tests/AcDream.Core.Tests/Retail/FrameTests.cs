@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;

@@ -1,6 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics.Managers;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Tests.Replay.Harness;
 using Xunit;

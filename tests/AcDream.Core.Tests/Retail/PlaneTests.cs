@@ -1,15 +1,14 @@
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using Xunit;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Tests.Retail;
 
 public class PlaneTests
 {
     // The plane z = 10: N = (0, 0, 1), d = -10.
-    private static readonly Plane Floor10 = new(new Vector3(0f, 0f, 1f), -10f);
+    private static readonly CollisionPlane Floor10 = new(new Vector3(0f, 0f, 1f), -10f);
 
     [Fact]
     public void WhichSide_AboveBelowAndWithinEpsilon()
@@ -24,7 +23,7 @@ public class PlaneTests
     public void DotProduct_IsSignedDistanceForUnitNormal()
     {
         // N = (0.6, 0, 0.8), d = -2: at (10, 7, 5): 0.8*5 + 0*7 + 0.6*10 - 2 = 4 + 6 - 2 = 8.
-        var p = new Plane(new Vector3(0.6f, 0f, 0.8f), -2f);
+        var p = new CollisionPlane(new Vector3(0.6f, 0f, 0.8f), -2f);
         Assert.Equal(8.0, p.DotProduct(new Vector3(10f, 7f, 5f)), 6);
     }
 
@@ -32,7 +31,7 @@ public class PlaneTests
     public void SetHeight_DropsPointOntoSlopedPlane()
     {
         // N = (-5/13, 0, 12/13), d = -120/13 (the plane z = 10 + x * 5/12): at x = 12: z = 10 + 5 = 15.
-        var p = new Plane(new Vector3(-5f / 13f, 0f, 12f / 13f), -120f / 13f);
+        var p = new CollisionPlane(new Vector3(-5f / 13f, 0f, 12f / 13f), -120f / 13f);
         var v = new Vector3(12f, 3f, 999f);
         Assert.True(p.SetHeight(ref v));
         Assert.Equal(15f, v.Z, 4);
@@ -44,7 +43,7 @@ public class PlaneTests
     public void SetHeight_VerticalPlane_FailsAndLeavesPoint()
     {
         // |N.z| = 0.0001 <= EPSILON: retail refuses.
-        var p = new Plane(new Vector3(1f, 0f, 0.0001f), 0f);
+        var p = new CollisionPlane(new Vector3(1f, 0f, 0.0001f), 0f);
         var v = new Vector3(1f, 2f, 3f);
         Assert.False(p.SetHeight(ref v));
         Assert.Equal(new Vector3(1f, 2f, 3f), v);

@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;
@@ -73,14 +74,14 @@ public class PositionTests
         // Retail's "radial" term is the full 3-D centre distance minus the radii (acclient.c:467220), not the x-y distance.
         // c stands 3 m above a: radial = 3 - 1 = 2; vertical gap = 3 - (0 + 2) = 1; both positive -> sqrt(1² + 2²) = sqrt 5.
         var c = new Position(0xA9B40001u, new Vector3(10f, 10f, 3f));
-        Assert.Equal((float)System.Math.Sqrt(5.0), Position.CylinderDistance(0.5f, 2f, a, 0.5f, 2f, c), 5);
+        Assert.Equal((float)Math.Sqrt(5.0), Position.CylinderDistance(0.5f, 2f, a, 0.5f, 2f, c), 5);
         // c stands 1.5 m above a (height ranges overlap, vertical = 1.5 - 2 = -0.5): radial = 1.5 - 1 = 0.5 > 0 -> 0.5.
         var d = new Position(0xA9B40001u, new Vector3(10f, 10f, 1.5f));
         Assert.Equal(0.5f, Position.CylinderDistance(0.5f, 2f, a, 0.5f, 2f, d), 5);
         // Overlapping heights and centres 0.6 m apart (radial = 0.6 - 1 = -0.4): -sqrt(vertical² + radial²) with
         // vertical = 0 - 2 = -2 -> -sqrt(4 + 0.16).
         var e = new Position(0xA9B40001u, new Vector3(10.6f, 10f, 0f));
-        Assert.Equal((float)-System.Math.Sqrt(4.16), Position.CylinderDistance(0.5f, 2f, a, 0.5f, 2f, e), 4);
+        Assert.Equal((float)-Math.Sqrt(4.16), Position.CylinderDistance(0.5f, 2f, a, 0.5f, 2f, e), 4);
     }
 
     [Fact]
@@ -92,7 +93,7 @@ public class PositionTests
         // Other is 4 m east = straight ahead of an east-facing body, same heading.
         Assert.Equal(0f, rel.Origin.X, 5);
         Assert.Equal(4f, rel.Origin.Y, 5);
-        Assert.Equal(0.0, System.Math.Min(rel.GetHeading(), 360.0 - rel.GetHeading()), 3);
+        Assert.Equal(0.0, Math.Min(rel.GetHeading(), 360.0 - rel.GetHeading()), 3);
     }
 
     [Fact]

@@ -1,5 +1,5 @@
 using System;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Tests.Support;
 using Xunit;

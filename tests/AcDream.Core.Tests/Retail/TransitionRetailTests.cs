@@ -3,9 +3,8 @@ using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using Xunit;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Tests.Retail;
 
@@ -168,7 +167,7 @@ public class TransitionRetailTests
     public void AdjustOffset_IntoFlatContactPlane_ProjectsOntoIt()
     {
         Transition t = Make();
-        t.CollisionInfo.SetContactPlane(new Plane(new Vector3(0f, 0f, 1f), 0f), false);
+        t.CollisionInfo.SetContactPlane(new CollisionPlane(new Vector3(0f, 0f, 1f), 0f), false);
         // offset·N = -3 <= 0: offset - N (offset·N) = (1, 2, 0). (Contact cell id 0: no lift test.)
         Assert.Equal(new Vector3(1f, 2f, 0f), t.AdjustOffset(new Vector3(1f, 2f, -3f)));
     }
@@ -178,7 +177,7 @@ public class TransitionRetailTests
     {
         Transition t = Make();
         // N = (-0.6, 0, 0.8): ground rising towards +x with slope 0.75.
-        t.CollisionInfo.SetContactPlane(new Plane(new Vector3(-0.6f, 0f, 0.8f), 0f), false);
+        t.CollisionInfo.SetContactPlane(new CollisionPlane(new Vector3(-0.6f, 0f, 0.8f), 0f), false);
         // Uphill (1,0,0): offset·N = -0.6 -> (1,0,0) - N(-0.6) = (1 - 0.36, 0, 0.48) = (0.64, 0, 0.48).
         Vector3 up = t.AdjustOffset(new Vector3(1f, 0f, 0f));
         Assert.Equal(0.64f, up.X, 6);
@@ -193,7 +192,7 @@ public class TransitionRetailTests
     public void AdjustOffset_SlidingOnContactPlane_FollowsTheCrease()
     {
         Transition t = Make();
-        t.CollisionInfo.SetContactPlane(new Plane(new Vector3(0f, 0f, 1f), 0f), false);
+        t.CollisionInfo.SetContactPlane(new CollisionPlane(new Vector3(0f, 0f, 1f), 0f), false);
         t.CollisionInfo.SetSlidingNormal(new Vector3(1f, 0f, 0f));
         // crease = (s.z N.y - s.y N.z, s.x N.z - s.z N.x, s.y N.x - s.x N.y) = (0, 1, 0); offset (-1, 2, 5) -> crease * 2.
         Assert.Equal(new Vector3(0f, 2f, 0f), t.AdjustOffset(new Vector3(-1f, 2f, 5f)));
@@ -205,7 +204,7 @@ public class TransitionRetailTests
         Transition t = Make(0.5f);
         t.InitPath(null, At(10f, 10f, 19.8f), At(10f, 10f, 19.8f));
         t.SpherePath.SetCheckPos(At(10f, 10f, 19.8f), null);
-        t.CollisionInfo.SetContactPlane(new Plane(new Vector3(0f, 0f, 1f), -20f), false);
+        t.CollisionInfo.SetContactPlane(new CollisionPlane(new Vector3(0f, 0f, 1f), -20f), false);
         t.CollisionInfo.ContactPlaneCellId = Cell;
         // Centre z = 20.3: distance 0.3 < r - EPSILON = 0.4998 -> lift (0.5 - 0.3) / 1 = 0.2 (less than r): origin 19.8 -> 20.
         Vector3 result = t.AdjustOffset(new Vector3(1f, 0f, 0f));
@@ -229,7 +228,7 @@ public class TransitionRetailTests
     {
         // Moving (-1, 1, 0) from (10,10,0) into a wall of normal (1, 0, 0), standing on a flat plane.
         Transition t = Moving(new Vector3(10f, 10f, 0f), new Vector3(9f, 11f, 0f));
-        t.CollisionInfo.SetContactPlane(new Plane(new Vector3(0f, 0f, 1f), 0f), false);
+        t.CollisionInfo.SetContactPlane(new CollisionPlane(new Vector3(0f, 0f, 1f), 0f), false);
         var n = new Vector3(1f, 0f, 0f);
         SpherePath path = t.SpherePath;
         // dir = n x N = (n.y N.z - n.z N.y, N.x n.z - N.z n.x, N.y n.x - N.x n.y) = (0, -1, 0); movement m = (-1, 1, 0);
@@ -256,7 +255,7 @@ public class TransitionRetailTests
         // Normal parallel to the contact normal and opposed: (0,0,-1) against N = (0,0,1): dir = 0 and n·N = -1 < 0.
         // Retail reverses the movement into the normal: -(m) = -(0, 0, 1) normalised = (0, 0, -1).
         Transition t = Moving(new Vector3(10f, 10f, 0f), new Vector3(10f, 10f, 1f));
-        t.CollisionInfo.SetContactPlane(new Plane(new Vector3(0f, 0f, 1f), 0f), false);
+        t.CollisionInfo.SetContactPlane(new CollisionPlane(new Vector3(0f, 0f, 1f), 0f), false);
         var n = new Vector3(0f, 0f, -1f);
         SpherePath path = t.SpherePath;
         Assert.Equal(TransitionState.Collided, path.GlobalSphere[0].SlideSphere(path, t.CollisionInfo, ref n, path.GlobalCurrCenter[0]));
@@ -271,8 +270,8 @@ public class TransitionRetailTests
         // -> (-0.6, 0, 0), normalised (-1, 0, 0). Movement m = (1, 0, 0); m·n = -1 <= 0 -> offset n (m·n) = (1, 0, 0)
         // and the collision normal n.
         Transition t = Moving(new Vector3(10f, 10f, 0f), new Vector3(11f, 10f, 0f));
-        t.CollisionInfo.LastKnownContactPlane = new Plane(new Vector3(0f, 0f, 1f), 0f);
-        TransitionState ts = t.CliffSlide(new Plane(new Vector3(-0.6f, 0f, 0.8f), 0f));
+        t.CollisionInfo.LastKnownContactPlane = new CollisionPlane(new Vector3(0f, 0f, 1f), 0f);
+        TransitionState ts = t.CliffSlide(new CollisionPlane(new Vector3(-0.6f, 0f, 0.8f), 0f));
         Assert.Equal(TransitionState.Adjusted, ts);
         Assert.Equal(new Vector3(12f, 10f, 0f), t.SpherePath.CheckPos.Frame.Origin);
         Assert.Equal(new Vector3(-1f, 0f, 0f), t.CollisionInfo.CollisionNormal);
@@ -282,13 +281,13 @@ public class TransitionRetailTests
     public void CliffSlide_ParallelPlanes_Ok()
     {
         Transition t = Moving(new Vector3(10f, 10f, 0f), new Vector3(11f, 10f, 0f));
-        t.CollisionInfo.LastKnownContactPlane = new Plane(new Vector3(0f, 0f, 1f), 0f);
-        Assert.Equal(TransitionState.Ok, t.CliffSlide(new Plane(new Vector3(0f, 0f, 1f), -3f)));
+        t.CollisionInfo.LastKnownContactPlane = new CollisionPlane(new Vector3(0f, 0f, 1f), 0f);
+        Assert.Equal(TransitionState.Ok, t.CliffSlide(new CollisionPlane(new Vector3(0f, 0f, 1f), -3f)));
     }
 
     // ---- validate_walkable -----------------------------------------------------------------------------------------
 
-    private static readonly Plane Ground = new(new Vector3(0f, 0f, 1f), -20f);
+    private static readonly CollisionPlane Ground = new(new Vector3(0f, 0f, 1f), -20f);
 
     [Fact]
     public void ValidateWalkable_Touching_SetsContactPlane()
@@ -322,7 +321,7 @@ public class TransitionRetailTests
         Transition t = Moving(new Vector3(10f, 10f, 19.7f), new Vector3(10f, 10f, 19.7f));
         t.ObjectInfo.State = ObjectInfoState.Contact | ObjectInfoState.OnWalkable;
         // N.z = 0.6 < floor_z: a walker may not stand on it, and the terrain test does not push it out either.
-        var steep = new Plane(new Vector3(0.8f, 0f, 0.6f), -12f - 8f);
+        var steep = new CollisionPlane(new Vector3(0.8f, 0f, 0.6f), -12f - 8f);
         var s = new Sphere(new Vector3(0f, 10f, 20.2f), 0.5f);
         Assert.Equal(TransitionState.Ok, t.ObjectInfo.ValidateWalkable(s, steep, false, 0f, t.SpherePath, t.CollisionInfo, Cell));
         Assert.False(t.CollisionInfo.ContactPlaneValid);

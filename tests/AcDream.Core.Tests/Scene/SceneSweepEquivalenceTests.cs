@@ -1,7 +1,8 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
@@ -81,7 +82,7 @@ public class SceneSweepEquivalenceTests
             full.Tick(t);
             scene.Tick(t);
             Assert.True(SceneTestContext.HashWorld(full) == SceneTestContext.HashWorld(scene), $"tick {tick}");
-            maxDormant = System.Math.Max(maxDormant, scene.DormantCount);
+            maxDormant = Math.Max(maxDormant, scene.DormantCount);
         }
 
         // The test is not vacuous: most items slept at some point.

@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using Xunit;
 
 namespace AcDream.Core.Tests.Stability;
@@ -72,8 +73,8 @@ public class CellCoordinatesAtEdgesTests
             Assert.True(LandDefs.GidToLCoord(p.ObjCellId, out int lx, out int ly));
             double gx = (lx & ~7) * 24.0 + p.Frame.Origin.X;
             double gy = (ly & ~7) * 24.0 + p.Frame.Origin.Y;
-            Assert.True(System.Math.Abs(gx - (startGX + 0.01 * i)) < 6.2e-3, $"step {i}: x {gx}");
-            Assert.True(System.Math.Abs(gy - (startGY + 0.01 * i)) < 6.2e-3, $"step {i}: y {gy}");
+            Assert.True(Math.Abs(gx - (startGX + 0.01 * i)) < 6.2e-3, $"step {i}: x {gx}");
+            Assert.True(Math.Abs(gy - (startGY + 0.01 * i)) < 6.2e-3, $"step {i}: y {gy}");
             // The cell's column/row agrees with the local coordinate.
             Assert.Equal((int)(p.Frame.Origin.X / 24f), lx & 7);
             Assert.Equal((int)(p.Frame.Origin.Y / 24f), ly & 7);

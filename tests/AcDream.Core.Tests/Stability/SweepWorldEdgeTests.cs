@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;

@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Tests.Support;
 
@@ -62,7 +63,7 @@ internal struct ReferenceFrame
             bool ok = !(float.IsNaN(Origin.X) || float.IsNaN(Origin.Y) || float.IsNaN(Origin.Z)
                         || float.IsNaN(Qw) || float.IsNaN(Qx) || float.IsNaN(Qy) || float.IsNaN(Qz));
             float norm = Qz * Qz + Qy * Qy + Qx * Qx + Qw * Qw;
-            if (float.IsNaN(norm) || (double)PhysicsGlobals.Epsilon * 5.0 < System.Math.Abs(norm - 1.0))
+            if (float.IsNaN(norm) || (double)PhysicsGlobals.Epsilon * 5.0 < Math.Abs(norm - 1.0))
             {
                 return false;
             }
@@ -73,7 +74,7 @@ internal struct ReferenceFrame
     public bool SetRotate(float qw, float qx, float qy, float qz)
         {
             float oldW = Qw, oldX = Qx, oldY = Qy, oldZ = Qz;
-            double inv = 1.0 / System.Math.Sqrt((double)qw * qw + (double)qx * qx + (double)qy * qy + (double)qz * qz);
+            double inv = 1.0 / Math.Sqrt((double)qw * qw + (double)qx * qx + (double)qy * qy + (double)qz * qz);
             Qw = (float)(qw * inv);
             Qx = (float)(qx * inv);
             Qy = (float)(qy * inv);
@@ -135,11 +136,11 @@ internal struct ReferenceFrame
                 return false;
             }
 
-            double theta = System.Math.Sqrt(mag2);
+            double theta = Math.Sqrt(mag2);
             float thetaInv = (float)(1.0 / theta);
             double half = theta * 0.5;
-            double s = System.Math.Sin(half);
-            float c = (float)System.Math.Cos(half);
+            double s = Math.Sin(half);
+            float c = (float)Math.Cos(half);
             float f = (float)(s * w.X * thetaInv);
             float g = (float)(thetaInv * s * w.Y);
             double h = s * thetaInv * w.Z;
@@ -154,7 +155,7 @@ internal struct ReferenceFrame
         {
             float dz = (float)(((double)M8 + M2) * 0.0 + M5);
             double rad = degrees * HeadingMath.DegToRad;
-            var direction = new Vector3((float)System.Math.Sin(rad), (float)System.Math.Cos(rad), dz);
+            var direction = new Vector3((float)Math.Sin(rad), (float)Math.Cos(rad), dz);
             SetVectorHeading(direction);
         }
 
@@ -166,11 +167,11 @@ internal struct ReferenceFrame
                 return;
             }
 
-            float yaw = (float)(-HeadingMath.CompassFromAtan2(System.Math.Atan2(n.Y, n.X)) * HeadingMath.DegToRad);
+            float yaw = (float)(-HeadingMath.CompassFromAtan2(Math.Atan2(n.Y, n.X)) * HeadingMath.DegToRad);
             // Divergence: retail passes n.z straight to asin; a normalised z one ulp past ±1 would give NaN there and set_rotate
             // would silently keep the old rotation. We clamp to [-1, 1] so such a vector still sets the heading.
-            double sinPitch = System.Math.Clamp((double)n.Z, -1.0, 1.0);
-            float pitch = (float)(System.Math.Asin(sinPitch) * HeadingMath.RadToDeg * HeadingMath.DegToRad);
+            double sinPitch = Math.Clamp((double)n.Z, -1.0, 1.0);
+            float pitch = (float)(Math.Asin(sinPitch) * HeadingMath.RadToDeg * HeadingMath.DegToRad);
             EulerSetRotate(pitch, 0f, yaw, 0);
         }
 
@@ -203,12 +204,12 @@ internal struct ReferenceFrame
             double ti = x * 0.5;
             double tj = y * 0.5;
             float th = (float)(zv * 0.5);
-            float ci = (float)System.Math.Cos(ti);
-            float cj = (float)System.Math.Cos(tj);
-            float ch = (float)System.Math.Cos(th);
-            float si = (float)System.Math.Sin(ti);
-            double sj = System.Math.Sin(tj);
-            double sh = System.Math.Sin(th);
+            float ci = (float)Math.Cos(ti);
+            float cj = (float)Math.Cos(tj);
+            float ch = (float)Math.Cos(th);
+            float si = (float)Math.Sin(ti);
+            double sj = Math.Sin(tj);
+            double sh = Math.Sin(th);
             float cc = ch * ci;
             float cs = (float)(ci * sh);
             float sc = si * ch;
@@ -259,7 +260,7 @@ internal struct ReferenceFrame
     /// animation list), on this frame as the offset.</summary>
     public void SequenceUpdate(float quantum, Vector3 sequenceVelocity, Vector3 sequenceOmega)
     {
-        double s = System.Math.Abs((double)quantum);
+        double s = Math.Abs((double)quantum);
         if (quantum < 0f)
         {
             s = -s;

@@ -2,7 +2,7 @@ using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Cells;
 

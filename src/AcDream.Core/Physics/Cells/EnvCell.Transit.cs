@@ -3,8 +3,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Cells;
 
@@ -30,7 +29,7 @@ public sealed partial class EnvCell
             ref readonly CellPortal portal = ref _portals[i];
             if (portal.IsOutside)
             {
-                Plane pl = portal.Portal.Plane;
+                CollisionPlane pl = portal.Portal.Plane;
                 for (int s = 0; s < spheres.Length; s++)
                 {
                     Vector3 c = spheres[s].Center;
@@ -66,7 +65,7 @@ public sealed partial class EnvCell
                 continue;
             }
 
-            Plane pp = portal.Portal.Plane;
+            CollisionPlane pp = portal.Portal.Plane;
             for (int s = 0; s < spheres.Length; s++)
             {
                 Vector3 lc = f.GlobalToLocal(spheres[s].Center);

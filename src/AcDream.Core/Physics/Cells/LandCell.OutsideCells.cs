@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Cells;
 
@@ -148,7 +148,7 @@ public sealed partial class LandCell
             ValidateSphere(centers[i], radii[i]);
         }
 
-        if (cellIds.Length - count < MaxCellsPerSphere * System.Math.Max(1, centers.Length))
+        if (cellIds.Length - count < MaxCellsPerSphere * Math.Max(1, centers.Length))
         {
             throw new ArgumentException($"The cell id buffer needs {MaxCellsPerSphere} free slots per sphere.", nameof(cellIds));
         }
@@ -185,8 +185,8 @@ public sealed partial class LandCell
             return false;
         }
 
-        int xc = unchecked((int)(long)System.Math.Floor(point.X / 24.0));
-        int yc = unchecked((int)(long)System.Math.Floor(point.Y / 24.0));
+        int xc = unchecked((int)(long)Math.Floor(point.X / 24.0));
+        int yc = unchecked((int)(long)Math.Floor(point.Y / 24.0));
         float ptX = (float)(point.X - xc * 24.0);
         float ptY = (float)(point.Y - yc * 24.0);
         float minRad = radius;

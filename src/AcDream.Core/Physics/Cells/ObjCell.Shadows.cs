@@ -56,7 +56,7 @@ public abstract partial class ObjCell
         if (NumShadowObjects >= _shadowObjects.Length)
         {
             // non-retail: doubling capacity (retail: + 5); unobservable but in allocations
-            Array.Resize(ref _shadowObjects, System.Math.Max(_shadowObjects.Length * 2, ShadowListGrowth));
+            Array.Resize(ref _shadowObjects, Math.Max(_shadowObjects.Length * 2, ShadowListGrowth));
         }
 
         _shadowObjects[NumShadowObjects++] = shadow;

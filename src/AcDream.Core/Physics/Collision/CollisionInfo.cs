@@ -1,8 +1,8 @@
+using AcDream.Core.Physics.Collision.Primitives;
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Collision;
 
@@ -28,7 +28,7 @@ internal sealed class CollisionInfo
     public bool LastKnownContactPlaneValid;
 
     /// <summary>The plane the object stood on most recently. Retail: <c>last_known_contact_plane</c>.</summary>
-    public Plane LastKnownContactPlane;
+    public CollisionPlane LastKnownContactPlane;
 
     /// <summary>That plane is water. Retail: <c>last_known_contact_plane_is_water</c>.</summary>
     public bool LastKnownContactPlaneIsWater;
@@ -37,7 +37,7 @@ internal sealed class CollisionInfo
     public bool ContactPlaneValid;
 
     /// <summary>The plane the object stands on, local to <see cref="ContactPlaneCellId"/>'s landblock. Retail: <c>contact_plane</c>.</summary>
-    public Plane ContactPlane;
+    public CollisionPlane ContactPlane;
 
     /// <summary>The cell whose landblock the contact plane is expressed in. Retail: <c>contact_plane_cell_id</c>.</summary>
     public uint ContactPlaneCellId;
@@ -95,7 +95,7 @@ internal sealed class CollisionInfo
 
     /// <summary>Sets the contact plane.</summary>
     // retail: COLLISIONINFO::set_contact_plane (acclient.c:311580)
-    public void SetContactPlane(in Plane plane, bool isWater)
+    public void SetContactPlane(in CollisionPlane plane, bool isWater)
     {
         ContactPlaneValid = true;
         ContactPlane = plane;

@@ -1,8 +1,7 @@
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Collision;
 
@@ -83,7 +82,7 @@ internal sealed partial class ObjectInfo
     /// <param name="collisions">Receives the contact plane and environment collision.</param>
     /// <param name="landCellId">The cell the plane belongs to.</param>
     // retail: OBJECTINFO::validate_walkable (acclient.c:314160)
-    public TransitionState ValidateWalkable(in Sphere checkPos, in Plane contactPlane, bool isWater, float waterDepth,
+    public TransitionState ValidateWalkable(in Sphere checkPos, in CollisionPlane contactPlane, bool isWater, float waterDepth,
         SpherePath path, CollisionInfo collisions, uint landCellId)
     {
         Vector3 n = contactPlane.N;

@@ -1,3 +1,4 @@
+using System;
 using AcDream.Core.Physics.Collision.Primitives;
 
 namespace AcDream.Core.Physics.Collision;
@@ -44,12 +45,12 @@ internal readonly struct ObjectReach
         for (int i = 1; i < path.NumSphere; i++)
         {
             s = g[i];
-            MinX = System.Math.Min(MinX, (double)s.Center.X - s.Radius);
-            MinY = System.Math.Min(MinY, (double)s.Center.Y - s.Radius);
-            MinZ = System.Math.Min(MinZ, (double)s.Center.Z - s.Radius);
-            MaxX = System.Math.Max(MaxX, (double)s.Center.X + s.Radius);
-            MaxY = System.Math.Max(MaxY, (double)s.Center.Y + s.Radius);
-            MaxZ = System.Math.Max(MaxZ, (double)s.Center.Z + s.Radius);
+            MinX = Math.Min(MinX, (double)s.Center.X - s.Radius);
+            MinY = Math.Min(MinY, (double)s.Center.Y - s.Radius);
+            MinZ = Math.Min(MinZ, (double)s.Center.Z - s.Radius);
+            MaxX = Math.Max(MaxX, (double)s.Center.X + s.Radius);
+            MaxY = Math.Max(MaxY, (double)s.Center.Y + s.Radius);
+            MaxZ = Math.Max(MaxZ, (double)s.Center.Z + s.Radius);
         }
     }
 
@@ -60,7 +61,7 @@ internal readonly struct ObjectReach
     /// </summary>
     public bool Excludes(double x, double y, double z, double reach)
     {
-        double m = reach + Margin + RelativeMargin * (System.Math.Abs(x) + System.Math.Abs(y) + System.Math.Abs(z) + reach);
+        double m = reach + Margin + RelativeMargin * (Math.Abs(x) + Math.Abs(y) + Math.Abs(z) + reach);
         return x + m < MinX || x - m > MaxX || y + m < MinY || y - m > MaxY || z + m < MinZ || z - m > MaxZ;
     }
 }

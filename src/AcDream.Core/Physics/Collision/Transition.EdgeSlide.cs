@@ -1,6 +1,6 @@
+using AcDream.Core.Physics.Collision.Primitives;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision;
 
@@ -95,7 +95,7 @@ internal sealed partial class Transition
     /// </summary>
     /// <returns><see cref="TransitionState.Adjusted"/>, or <see cref="TransitionState.Ok"/> when the planes are parallel.</returns>
     // retail: CTransition::cliff_slide (acclient.c:312004)
-    public TransitionState CliffSlide(in Plane contactPlane)
+    public TransitionState CliffSlide(in CollisionPlane contactPlane)
     {
         SpherePath path = SpherePath;
         CollisionInfo ci = CollisionInfo;

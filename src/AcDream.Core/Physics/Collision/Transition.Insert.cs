@@ -1,9 +1,9 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Collision;
 
@@ -314,9 +314,9 @@ internal sealed partial class Transition
             {
                 ObjectInfo.KillVelocity();
                 Vector3 c = path.GlobalCurrCenter[0];
-                Plane lk = ci.LastKnownContactPlane;
+                CollisionPlane lk = ci.LastKnownContactPlane;
                 double dist = (double)c.Z * lk.N.Z + (double)c.Y * lk.N.Y + (double)c.X * lk.N.X + lk.D;
-                if ((double)path.GlobalSphere[0].Radius + PhysicsGlobals.Epsilon > System.Math.Abs(dist))
+                if ((double)path.GlobalSphere[0].Radius + PhysicsGlobals.Epsilon > Math.Abs(dist))
                 {
                     ci.SetContactPlane(lk, ci.LastKnownContactPlaneIsWater);
                     ci.ContactPlaneCellId = ci.LastKnownContactPlaneCellId;
@@ -364,7 +364,7 @@ internal sealed partial class Transition
                 ci.FramesStationaryFall = StationaryFallFrames;
                 double xy = (double)g.Center.Y + g.Center.X;
                 double z = xy * 0.0 + g.Center.Z;
-                var plane = new Plane(new Vector3(0f, 0f, 1f), (float)(g.Radius - z));
+                var plane = new CollisionPlane(new Vector3(0f, 0f, 1f), (float)(g.Radius - z));
                 ci.SetContactPlane(plane, false);
                 ci.ContactPlaneCellId = path.CheckPos.ObjCellId;
                 if ((ObjectInfo.State & ObjectInfoState.Contact) == 0)

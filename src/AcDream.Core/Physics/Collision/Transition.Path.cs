@@ -1,8 +1,8 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision;
 
@@ -30,7 +30,7 @@ internal sealed partial class Transition
 
         offset = path.BeginPos.GetOffset(path.EndPos);
         double radius = path.LocalSphere[0].Radius;
-        double dist = System.Math.Sqrt((double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z);
+        double dist = Math.Sqrt((double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z);
         if ((ObjectInfo.State & ObjectInfoState.IsViewer) != 0)
         {
             if (dist <= PhysicsGlobals.Epsilon)
@@ -43,7 +43,7 @@ internal sealed partial class Transition
                 double steps = dist / radius;
                 double inv = 1.0 / steps;
                 offsetPerStep = new Vector3((float)(inv * offset.X), (float)(inv * offset.Y), (float)(inv * offset.Z));
-                numSteps = unchecked((uint)(ulong)System.Math.Floor(steps)) + 1;
+                numSteps = unchecked((uint)(ulong)Math.Floor(steps)) + 1;
             }
 
             return;
@@ -53,7 +53,7 @@ internal sealed partial class Transition
         double s = dist / (StepScale() * radius);
         if (s > 1.0)
         {
-            double n = System.Math.Ceiling(s);
+            double n = Math.Ceiling(s);
             double inv = 1.0 / n;
             offsetPerStep = new Vector3((float)(inv * offset.X), (float)(inv * offset.Y), (float)(inv * offset.Z));
             numSteps = unchecked((uint)(ulong)n);
@@ -144,7 +144,7 @@ internal sealed partial class Transition
                 if (dist < (double)g.Radius - PhysicsGlobals.Epsilon)
                 {
                     double lift = (g.Radius - dist) / n.Z;
-                    if (g.Radius > System.Math.Abs(lift))
+                    if (g.Radius > Math.Abs(lift))
                     {
                         SpherePath.AddOffsetToCheckPos(new Vector3(0f, 0f, (float)lift));
                     }
@@ -166,10 +166,10 @@ internal sealed partial class Transition
 
     /// <summary>Moves <paramref name="offset"/> onto the plane along z (skipped for a near-vertical plane).</summary>
     // retail: Plane::snap_to_plane (acclient.c:311526)
-    internal static void SnapToPlane(in Plane plane, ref Vector3 offset)
+    internal static void SnapToPlane(in CollisionPlane plane, ref Vector3 offset)
     {
         Vector3 n = plane.N;
-        if (System.Math.Abs(n.Z) > PhysicsGlobals.Epsilon)
+        if (Math.Abs(n.Z) > PhysicsGlobals.Epsilon)
         {
             offset.Z = 0f;
             double invZ = 1.0 / n.Z;
@@ -233,7 +233,7 @@ internal sealed partial class Transition
         {
             if (viewer && step == numSteps - 1)
             {
-                double dist = System.Math.Sqrt((double)offset.Z * offset.Z + (double)offset.Y * offset.Y + (double)offset.X * offset.X);
+                double dist = Math.Sqrt((double)offset.Z * offset.Z + (double)offset.Y * offset.Y + (double)offset.X * offset.X);
                 if (dist > PhysicsGlobals.Epsilon)
                 {
                     double k = (dist - path.LocalSphere[0].Radius * (double)(numSteps - 1)) / dist;

@@ -1,6 +1,7 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision;
 
@@ -137,7 +138,7 @@ internal sealed partial class Transition
             return false;
         }
 
-        double ceilSteps = System.Math.Ceiling(steps);
+        double ceilSteps = Math.Ceiling(steps);
         float distPerStep = (float)(adjustRad / ceilSteps);
         uint numSteps = unchecked((uint)(ulong)ceilSteps);
         float distance = 0f;
@@ -148,7 +149,7 @@ internal sealed partial class Transition
             distance += distPerStep;
             double radial = (double)radialPerStep + adjust;
             adjust = (float)radial;
-            uint numRad = 2u * unchecked((uint)(ulong)System.Math.Ceiling(radial));
+            uint numRad = 2u * unchecked((uint)(ulong)Math.Ceiling(radial));
             Frame heading = Frame.Identity;
             float angleOffset = (float)(360.0 / numRad);
             for (uint j = 0; j < numRad; j++)

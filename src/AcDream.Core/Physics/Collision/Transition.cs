@@ -2,9 +2,8 @@ using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Physics.Collision;
 
@@ -129,7 +128,7 @@ internal sealed partial class Transition
 
     /// <summary>Seeds the current and last known contact planes from the object's contact state.</summary>
     // retail: CTransition::init_contact_plane (acclient.c:315598)
-    public void InitContactPlane(uint cellId, in Plane plane, bool isWater)
+    public void InitContactPlane(uint cellId, in CollisionPlane plane, bool isWater)
     {
         CollisionInfo ci = CollisionInfo;
         ci.LastKnownContactPlaneValid = true;
@@ -147,7 +146,7 @@ internal sealed partial class Transition
     /// the CURRENT contact plane's cell id, not the last known one.
     /// </summary>
     // retail: CTransition::init_last_known_contact_plane (acclient.c:315611)
-    public void InitLastKnownContactPlane(uint cellId, in Plane plane, bool isWater)
+    public void InitLastKnownContactPlane(uint cellId, in CollisionPlane plane, bool isWater)
     {
         CollisionInfo ci = CollisionInfo;
         ci.LastKnownContactPlaneValid = true;

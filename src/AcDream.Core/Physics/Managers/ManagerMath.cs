@@ -1,4 +1,5 @@
-using AcDream.Core.Physics.Math;
+using System;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Managers;
 
@@ -13,13 +14,13 @@ internal static class ManagerMath
     public static double Distance(in Position from, in Position to)
     {
         System.Numerics.Vector3 o = from.GetOffset(to);
-        return System.Math.Sqrt((double)o.X * o.X + (double)o.Y * o.Y + (double)o.Z * o.Z);
+        return Math.Sqrt((double)o.X * o.X + (double)o.Y * o.Y + (double)o.Z * o.Z);
     }
 
     /// <summary><c>AC1Legacy::Vector3::magnitude</c> in double (acclient.c:143594).</summary>
     // retail: AC1Legacy::Vector3::magnitude (acclient.c:143594)
     public static double Magnitude(System.Numerics.Vector3 v) =>
-        System.Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
+        Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
 
     /// <summary>True when the position can be queued or stored: a valid unit quaternion and an origin in the position domain
     /// (<see cref="InputLimits"/>).</summary>

@@ -1,4 +1,4 @@
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.Managers;

@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
 
@@ -90,7 +90,7 @@ public sealed class StickyManager
         // Position::cylinder_distance_no_z (acclient.c:467268) kept in double until the float store of mag.
         float r1 = (float)obj.GetRadius();
         Vector3 between = body.GetOffset(targetPos);
-        double cyl = System.Math.Sqrt((double)between.X * between.X + (double)between.Y * between.Y + (double)between.Z * between.Z)
+        double cyl = Math.Sqrt((double)between.X * between.X + (double)between.Y * between.Y + (double)between.Z * between.Z)
             - ((double)r1 + TargetRadius);
         float mag = (float)(cyl - StickyRadius);
 
@@ -112,7 +112,7 @@ public sealed class StickyManager
         }
 
         double step = speed * quantum;
-        if (step >= System.Math.Abs(mag))
+        if (step >= Math.Abs(mag))
         {
             o.X = mag * o.X;
             o.Y = mag * o.Y;
@@ -130,7 +130,7 @@ public sealed class StickyManager
         float toTarget = (float)body.Heading(targetPos);
         double turn = toTarget - body.Frame.GetHeading();
         float sought = (float)turn;
-        if (System.Math.Abs(turn) < PhysicsGlobals.Epsilon)
+        if (Math.Abs(turn) < PhysicsGlobals.Epsilon)
         {
             sought = 0f;
         }

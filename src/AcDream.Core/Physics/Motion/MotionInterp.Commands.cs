@@ -1,3 +1,4 @@
+using System;
 using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.Motion;
@@ -334,7 +335,7 @@ public sealed partial class MotionInterp
             case MotionCommand.SideStepRight:
                 double v = rate * speed;
                 speed = (float)v;
-                if (System.Math.Abs(v) > MaxSidestepAnimRate)
+                if (Math.Abs(v) > MaxSidestepAnimRate)
                 {
                     speed = v <= 0.0 ? (float)(-1.0 * MaxSidestepAnimRate) : (float)(1.0 * MaxSidestepAnimRate);
                 }

@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.Motion;
@@ -195,8 +196,8 @@ public sealed partial class MotionInterp
         Vector3 v = GetStateVelocity();
         float vz = (float)GetJumpVZ();
         v.Z = vz;
-        if (System.Math.Abs(v.X) < (double)PhysicsGlobals.Epsilon && System.Math.Abs(v.Y) < (double)PhysicsGlobals.Epsilon
-            && System.Math.Abs(vz) < (double)PhysicsGlobals.Epsilon && _physicsObj is not null)
+        if (Math.Abs(v.X) < (double)PhysicsGlobals.Epsilon && Math.Abs(v.Y) < (double)PhysicsGlobals.Epsilon
+            && Math.Abs(vz) < (double)PhysicsGlobals.Epsilon && _physicsObj is not null)
         {
             v = GlobalVelocityToLocal(_physicsObj);
         }

@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
 
@@ -217,7 +218,7 @@ public sealed partial class MotionInterp : IMotionInterpreter
 
         float z = 0f;
         double max = RunRate() * RunAnimSpeed;
-        double len = System.Math.Sqrt((double)x * x + (double)y * y + (double)z * z);
+        double len = Math.Sqrt((double)x * x + (double)y * y + (double)z * z);
         if (len > max)
         {
             x = (float)(1.0 / len * x * max);

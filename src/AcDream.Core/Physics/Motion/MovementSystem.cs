@@ -1,3 +1,5 @@
+using System;
+
 namespace AcDream.Core.Physics.Motion;
 
 /// <summary>
@@ -118,10 +120,10 @@ public static class MovementSystem
             return (long)((power + 1.0) * 100.0);
         }
 
-        return (long)System.Math.Ceiling((load + 0.5) * power * 8.0 + 2.0);
+        return (long)Math.Ceiling((load + 0.5) * power * 8.0 + 2.0);
     }
 
     /// <summary>The launch speed of a jump of height <paramref name="height"/>: <c>(float)sqrt(height * 19.6)</c>.</summary>
     // retail: CACQualities::InqJumpVelocity (acclient.c:443772), its last statement
-    public static float JumpVelocity(double height) => (float)System.Math.Sqrt(height * TwiceGravity);
+    public static float JumpVelocity(double height) => (float)Math.Sqrt(height * TwiceGravity);
 }

@@ -1,7 +1,7 @@
+using AcDream.Core.Physics.Collision.Primitives;
 using System.Numerics;
 using AcDream.Core.Physics.Collision;
-using AcDream.Core.Physics.Math;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Objects;
 
@@ -52,7 +52,7 @@ public sealed partial class PhysicsObj
             if ((_transientState & TransientState.Contact) != 0)
             {
                 bool isWater = (_transientState & TransientState.WaterContact) != 0;
-                var plane = new Plane(ContactPlaneNormal, ContactPlaneD);
+                var plane = new CollisionPlane(ContactPlaneNormal, ContactPlaneD);
                 if (CheckContact(true))
                 {
                     transition.InitContactPlane(ContactPlaneCellId, plane, isWater);

@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Objects;

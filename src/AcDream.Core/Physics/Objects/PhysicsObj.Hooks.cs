@@ -1,6 +1,6 @@
 using System;
 using AcDream.Core.Physics.Hooks;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Objects;

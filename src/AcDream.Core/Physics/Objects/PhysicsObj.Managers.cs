@@ -1,5 +1,5 @@
 using AcDream.Core.Physics.Managers;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.World;
 

@@ -1,5 +1,5 @@
 using System;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Objects;
 
@@ -22,7 +22,7 @@ public sealed partial class PhysicsObj
     public bool NewerEvent(PhysicsTimeStamp stamp, ushort newTime)
     {
         ushort old = _updateTimes[StampIndex(stamp)];
-        bool newer = System.Math.Abs(newTime - old) > 0x7FFF ? newTime < old : old < newTime;
+        bool newer = Math.Abs(newTime - old) > 0x7FFF ? newTime < old : old < newTime;
         if (newer)
         {
             _updateTimes[(int)stamp] = newTime;
@@ -52,7 +52,7 @@ public sealed partial class PhysicsObj
         Touch();
 
         ushort stored = _updateTimes[(int)PhysicsTimeStamp.Teleport];
-        bool older = System.Math.Abs(stored - teleportTimestamp) > 0x7FFF ? stored < teleportTimestamp : teleportTimestamp < stored;
+        bool older = Math.Abs(stored - teleportTimestamp) > 0x7FFF ? stored < teleportTimestamp : teleportTimestamp < stored;
         if (older)
         {
             return ReceivedPositionResult.StaleTeleport;

@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;
 
@@ -151,7 +151,7 @@ public sealed partial class PhysicsObj
         // GetBlockOffset's own first test, done here so that an obstacle of the same landblock costs no call.
         Vector3 b = (reach.CellId >> 16) == (_position.ObjCellId >> 16) ? Vector3.Zero : LandDefs.GetBlockOffset(reach.CellId, _position.ObjCellId);
         Vector3 o = _position.Frame.Origin;
-        return reach.Excludes((double)b.X + o.X, (double)b.Y + o.Y, (double)b.Z + o.Z, System.Math.Abs((double)Scale) * bound);
+        return reach.Excludes((double)b.X + o.X, (double)b.Y + o.Y, (double)b.Z + o.Z, Math.Abs((double)Scale) * bound);
     }
 
     /// <summary>

@@ -1,6 +1,7 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Objects;
@@ -15,7 +16,7 @@ public sealed partial class PhysicsObj
     internal const double SleddingSteepAngle = 0.17453292519943295;
 
     /// <summary>cos(10 degrees) as retail evaluates it in calc_friction, a double (bits 0x3FEF838B8C811C17).</summary>
-    internal static readonly double SleddingSteepCos = System.Math.Cos(SleddingSteepAngle);
+    internal static readonly double SleddingSteepCos = Math.Cos(SleddingSteepAngle);
 
     /// <summary>
     /// Integrates one step into <paramref name="frame"/>: the 50 m/s clamp, friction, the small-velocity stop, the origin
@@ -172,7 +173,7 @@ public sealed partial class PhysicsObj
             f = _friction;
         }
 
-        double k = System.Math.Pow(1.0 - f, quantum);
+        double k = Math.Pow(1.0 - f, quantum);
         _velocity = new Vector3((float)(k * v.X), (float)(k * v.Y), (float)(k * v.Z));
     }
 
@@ -218,9 +219,9 @@ public sealed partial class PhysicsObj
     /// (the difference in double, as the x87 computes it).</summary>
     // retail: Vector3::operator!= (acclient.c:156312)
     private static bool DiffersByMoreThanEpsilon(Vector3 a, Vector3 b) =>
-        System.Math.Abs((double)a.X - b.X) > PhysicsGlobals.Epsilon
-        || System.Math.Abs((double)a.Y - b.Y) > PhysicsGlobals.Epsilon
-        || System.Math.Abs((double)a.Z - b.Z) > PhysicsGlobals.Epsilon;
+        Math.Abs((double)a.X - b.X) > PhysicsGlobals.Epsilon
+        || Math.Abs((double)a.Y - b.Y) > PhysicsGlobals.Epsilon
+        || Math.Abs((double)a.Z - b.Z) > PhysicsGlobals.Epsilon;
 
     /// <summary>Sets the velocity from local axes (rotated to world axes by the object's frame), then <see cref="SetVelocity"/>.</summary>
     /// <exception cref="System.ArgumentException">A component is NaN or infinite.</exception>

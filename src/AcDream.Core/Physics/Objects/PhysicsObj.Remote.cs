@@ -1,6 +1,6 @@
 using System;
 using AcDream.Core.Physics.Managers;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Objects;
 
@@ -53,7 +53,7 @@ public sealed partial class PhysicsObj
         }
 
         ushort teleportTime = GetUpdateTime(PhysicsTimeStamp.Teleport);
-        bool staleTeleport = System.Math.Abs(teleportTime - teleportTimestamp) > 0x7FFF
+        bool staleTeleport = Math.Abs(teleportTime - teleportTimestamp) > 0x7FFF
             ? teleportTime < teleportTimestamp
             : teleportTimestamp < teleportTime;
         if (staleTeleport)

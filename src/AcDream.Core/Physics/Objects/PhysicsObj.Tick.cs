@@ -1,6 +1,7 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
 
@@ -31,7 +32,7 @@ public sealed partial class PhysicsObj
         {
             Vector3 pv = player._position.GetOffset(_position);
             PlayerVector = pv;
-            double d = System.Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+            double d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
             PlayerDistance = (float)d;
             if (d > PhysicsGlobals.PlayerActivityDistance && world.ObjectMaintenanceActive)
             {
@@ -243,6 +244,6 @@ public sealed partial class PhysicsObj
             return 0.0;
         }
 
-        return HeadingMath.CompassFromAtan2(System.Math.Atan2(n.Y, n.X));
+        return HeadingMath.CompassFromAtan2(Math.Atan2(n.Y, n.X));
     }
 }

@@ -77,7 +77,7 @@ internal sealed class GateBand
     public double DistanceTo(double x, double y, double z)
     {
         double dx = x - CentreX, dy = y - CentreY, dz = z - CentreZ;
-        return System.Math.Sqrt(dx * dx + dy * dy + dz * dz);
+        return Math.Sqrt(dx * dx + dy * dy + dz * dz);
     }
 
     /// <summary>Empties the band and moves its centre (entries are appended next).</summary>

@@ -1,5 +1,5 @@
 using System;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Scene;
 
@@ -78,7 +78,7 @@ internal sealed class GateGrid
     /// <summary>Adds an entry for an object at global (x, y) and float z; returns its place.</summary>
     public void Add(int slot, int generation, byte flags, double x, double y, float z, bool far, out int cell, out int index)
     {
-        int cx = (int)System.Math.Floor(x / CellSize), cy = (int)System.Math.Floor(y / CellSize);
+        int cx = (int)Math.Floor(x / CellSize), cy = (int)Math.Floor(y / CellSize);
         cell = FindOrAddCell(cx, cy);
         if (_cells[cell].Count == _cells[cell].Capacity)
         {
@@ -99,8 +99,8 @@ internal sealed class GateGrid
             Side = far ? 1f : -1f,
             Flags = flags,
         };
-        c.ZMin = System.Math.Min(c.ZMin, z);
-        c.ZMax = System.Math.Max(c.ZMax, z);
+        c.ZMin = Math.Min(c.ZMin, z);
+        c.ZMax = Math.Max(c.ZMax, z);
     }
 
     /// <summary>Removes the entry at a place: marks it dead (never selected) until the next <see cref="Sweep"/>.</summary>
@@ -169,8 +169,8 @@ internal sealed class GateGrid
         const double gate = PhysicsGlobals.PlayerActivityDistance;
         int n = 0, b = 0, r = 0;
         tested = 0;
-        double bandLo = Sq(System.Math.Max(0.0, gate - bandWidth)), bandHi = Sq(gate + bandWidth);
-        double ringLo = Sq(System.Math.Max(0.0, gate - ringWidth)), ringHi = Sq(gate + ringWidth);
+        double bandLo = Sq(Math.Max(0.0, gate - bandWidth)), bandHi = Sq(gate + bandWidth);
+        double ringLo = Sq(Math.Max(0.0, gate - ringWidth)), ringHi = Sq(gate + ringWidth);
         for (int ci = 0; ci < _cellCount; ci++)
         {
             ref Cell c = ref _cells[ci];
@@ -242,7 +242,7 @@ internal sealed class GateGrid
         double x0 = c.Cx * CellSize - qx, y0 = c.Cy * CellSize - qy, z0 = c.ZMin - qz;
         double x1 = x0 + CellSize, y1 = y0 + CellSize, z1 = c.ZMax - qz;
         double nx = Nearest(x0, x1), ny = Nearest(y0, y1), nz = Nearest(z0, z1);
-        double fx = System.Math.Max(-x0, x1), fy = System.Math.Max(-y0, y1), fz = System.Math.Max(-z0, z1);
+        double fx = Math.Max(-x0, x1), fy = Math.Max(-y0, y1), fz = Math.Max(-z0, z1);
         double near2 = nx * nx + ny * ny + nz * nz, far2 = fx * fx + fy * fy + fz * fz;
         double hi = gate + width, lo = gate - width;
         return near2 < hi * hi && (lo <= 0.0 || far2 > lo * lo);
@@ -346,7 +346,7 @@ internal sealed class GateGrid
 
         if (needed > _spare.Length)
         {
-            int size = System.Math.Max(_arena.Length * 2, (int)System.Numerics.BitOperations.RoundUpToPowerOf2((uint)needed * 2));
+            int size = Math.Max(_arena.Length * 2, (int)System.Numerics.BitOperations.RoundUpToPowerOf2((uint)needed * 2));
             _spare = new Entry[size];
             Entry[] grown = new Entry[size];
             Array.Copy(_arena, grown, _arenaUsed);

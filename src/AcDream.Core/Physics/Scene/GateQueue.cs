@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.Scene;
@@ -176,7 +176,7 @@ internal sealed class GateQueue
             // (The ring's entries are all in the band: its region lay inside the band's when it was built, and additions go to
             // both; so the band's scan finds every crossing.)
             tested = _band.Count;
-            double lo = System.Math.Max(0.0, Gate - RingHalfWidth - MemberSlack), hi = Gate + RingHalfWidth + MemberSlack;
+            double lo = Math.Max(0.0, Gate - RingHalfWidth - MemberSlack), hi = Gate + RingHalfWidth + MemberSlack;
             _rebuild = FromBand;
             return _band.Scan(px, py, pz, r2, ScanTolerance, FromBand, ref hits, 0, true, (float)(lo * lo), (float)(hi * hi));
         }
@@ -188,7 +188,7 @@ internal sealed class GateQueue
             ScanTolerance, ref _hitPlaces, ref _bandPlaces, out _bandPlaceCount, ref _ringPlaces, out _ringPlaceCount, out tested);
         if (n > hits.Length)
         {
-            Array.Resize(ref hits, System.Math.Max(n, hits.Length * 2));
+            Array.Resize(ref hits, Math.Max(n, hits.Length * 2));
         }
 
         for (int i = 0; i < n; i++)
@@ -408,7 +408,7 @@ internal sealed class GateQueue
         if (band.Valid)
         {
             _grid.Global(r.Cell, r.CellIndex, out double x, out double y, out double z);
-            if (System.Math.Abs(band.DistanceTo(x, y, z) - Gate) < band.HalfWidth + MemberSlack)
+            if (Math.Abs(band.DistanceTo(x, y, z) - Gate) < band.HalfWidth + MemberSlack)
             {
                 AppendPlace(band, r.Cell, r.CellIndex);
             }

@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
 
@@ -86,7 +86,7 @@ internal sealed partial class SceneTicker
         {
             Vector3 pv = seen.GetOffset(obj._position);
             s.PlayerVector = pv;
-            s.PlayerDistance = (float)System.Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+            s.PlayerDistance = (float)Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
         }
     }
 

@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.Scene;
@@ -51,12 +52,12 @@ internal sealed partial class SceneTicker
 
                 queue.Position(h, out double gx, out double gy, out double gz);
                 double dx = gx - sx, dy = gy - sy, dz = gz - sz;
-                double d = System.Math.Sqrt(dx * dx + dy * dy + dz * dz);
-                if (!(System.Math.Abs(d - PhysicsGlobals.PlayerActivityDistance) > 2.0 * GateKeySlack(d)))
+                double d = Math.Sqrt(dx * dx + dy * dy + dz * dz);
+                if (!(Math.Abs(d - PhysicsGlobals.PlayerActivityDistance) > 2.0 * GateKeySlack(d)))
                 {
                     // Near the boundary: decide with retail's own arithmetic (update_object's get_offset and double sqrt).
                     Vector3 pv = seen.GetOffset(queue.Object(h.Slot)._position);
-                    d = System.Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+                    d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
                 }
 
                 bool isFar = d > PhysicsGlobals.PlayerActivityDistance;

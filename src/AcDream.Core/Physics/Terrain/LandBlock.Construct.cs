@@ -2,7 +2,7 @@ using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Terrain;
 
@@ -186,8 +186,8 @@ public sealed partial class LandBlock
         byte lo = _height[0];
         for (int i = 1; i < VertexCount; i++)
         {
-            hi = System.Math.Max(hi, _height[i]);
-            lo = System.Math.Min(lo, _height[i]);
+            hi = Math.Max(hi, _height[i]);
+            lo = Math.Min(lo, _height[i]);
         }
 
         MaxZval = (float)(HeightTable[hi] + 200.0);

@@ -1,6 +1,6 @@
 using System;
 using System.IO;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using StbImageSharp;
 
 namespace AcDream.Core.Physics.Terrain;

@@ -3,7 +3,7 @@ using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Terrain;
 
@@ -86,8 +86,8 @@ public sealed partial class TerrainWorld
             return false;
         }
 
-        int bx = System.Math.Min((int)(globalX / LandDefs.BlockLength), LandDefs.LandblocksPerSide - 1);
-        int by = System.Math.Min((int)(globalY / LandDefs.BlockLength), LandDefs.LandblocksPerSide - 1);
+        int bx = Math.Min((int)(globalX / LandDefs.BlockLength), LandDefs.LandblocksPerSide - 1);
+        int by = Math.Min((int)(globalY / LandDefs.BlockLength), LandDefs.LandblocksPerSide - 1);
         var local = new Vector3((float)(globalX - bx * (double)LandDefs.BlockLength), (float)(globalY - by * (double)LandDefs.BlockLength), 0f);
 
         // Cell 1 of the block; AdjustToOutside then picks the right cell (and the next block if the float rounded to 192).

@@ -1,4 +1,4 @@
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.World;
 

@@ -4,7 +4,7 @@ using System.Globalization;
 using System.IO;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
@@ -240,7 +240,7 @@ public static class RealReplay
                 }
 
                 Vector3 d = obj.Position.Frame.Origin - p.Origin;
-                samples.Add(new RealSample(p.T, System.Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y), moving));
+                samples.Add(new RealSample(p.T, Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y), moving));
             }
         }
 
@@ -255,7 +255,7 @@ public static class RealReplay
         }
 
         Vector3 d = b.Origin - a.Origin;
-        return System.Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y) / (b.T - a.T);
+        return Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y) / (b.T - a.T);
     }
 
     /// <summary>Median and maximum of the errors selected by <paramref name="moving"/> (null: all).</summary>

@@ -1,6 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Tests.Replay.Harness;

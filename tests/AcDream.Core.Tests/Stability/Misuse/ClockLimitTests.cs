@@ -1,6 +1,6 @@
 using System;
 using System.Linq;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 using Xunit;

@@ -8,7 +8,7 @@ using System.Xml.Linq;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Managers;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using Xunit;
 

@@ -96,7 +96,7 @@ public class SpanInputsTests
         var polys = new System.Collections.Generic.List<Polygon>();
         Support.BspScene.AddBox(polys, new Vector3(-0.5f, -0.5f, 0f), new Vector3(0.5f, 0.5f, 1.2f));
         var gfx = new Physics.Collision.Bsp.GfxObjPhysics(Physics.Collision.Bsp.BspBuilder.Build(polys.ToArray()));
-        Physics.Math.Frame frame = Physics.Math.Frame.Identity;
+        Physics.Spatial.Frame frame = Physics.Spatial.Frame.Identity;
         var scale = Vector3.One;
         switch (label)
         {
@@ -115,7 +115,7 @@ public class SpanInputsTests
         PublicState before = PublicState.Capture(s);
         Assert.ThrowsAny<ArgumentException>(() => s.WalkerParts.SetPhysicsParts([gfx], [frame], [scale]));
         Assert.Empty(PublicState.Diff(before, PublicState.Capture(s)));
-        s.WalkerParts.SetPhysicsParts([gfx], [Physics.Math.Frame.Identity], [Vector3.One]); // the control: accepted
+        s.WalkerParts.SetPhysicsParts([gfx], [Physics.Spatial.Frame.Identity], [Vector3.One]); // the control: accepted
         Assert.Equal(1, s.WalkerParts.NumCollisionParts);
     }
 }

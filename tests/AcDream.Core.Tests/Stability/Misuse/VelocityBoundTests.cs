@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using Xunit;
 
@@ -26,7 +26,7 @@ public class VelocityBoundTests
             return false;
         }
 
-        uint cell = (uint)((int)System.Math.Floor(o.X / 24.0) * 8 + (int)System.Math.Floor(o.Y / 24.0) + 1);
+        uint cell = (uint)((int)Math.Floor(o.X / 24.0) * 8 + (int)Math.Floor(o.Y / 24.0) + 1);
         return (id & 0xFFFFu) == cell;
     }
 

@@ -5,10 +5,9 @@ using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Tests.Support.Shared;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
 
 namespace AcDream.Core.Tests.Support.Geometry;
 
@@ -176,7 +175,7 @@ internal sealed class CellarScene
 
     // Inward planes of the convex hull of the cell's drawing polygons (walls, floor, ceiling and portals): every plane
     // through three vertices with all vertices on its front (1 mm), once each.
-    private static Plane[] HullPlanes(CellDump d)
+    private static CollisionPlane[] HullPlanes(CellDump d)
     {
         var pts = new List<Vector3>();
         foreach (DumpPolygon p in d.PortalPolygons)
@@ -190,7 +189,7 @@ internal sealed class CellarScene
             }
         }
 
-        var planes = new List<Plane>();
+        var planes = new List<CollisionPlane>();
         for (int a = 0; a < pts.Count; a++)
         {
             for (int b = a + 1; b < pts.Count; b++)
@@ -219,7 +218,7 @@ internal sealed class CellarScene
 
                         if (front && !planes.Exists(pl => Vector3.Dot(pl.N, n) > 0.99999f && MathF.Abs(pl.D - dd) < 1e-3f))
                         {
-                            planes.Add(new Plane(n, dd));
+                            planes.Add(new CollisionPlane(n, dd));
                         }
                     }
                 }

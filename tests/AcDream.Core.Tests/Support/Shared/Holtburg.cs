@@ -1,6 +1,6 @@
 using System.Collections.Generic;
 using System.IO;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
 
 namespace AcDream.Core.Tests.Support.Shared;

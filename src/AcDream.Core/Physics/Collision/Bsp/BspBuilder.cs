@@ -2,8 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Bsp;
 
@@ -94,7 +93,7 @@ public static class BspBuilder
     /// (normals pointing into the cell), chained through the positive children as retail's cell trees are walked.
     /// </summary>
     /// <exception cref="ArgumentException">No plane, or a non-finite plane.</exception>
-    public static BspTree BuildCell(ReadOnlySpan<Plane> inwardPlanes)
+    public static BspTree BuildCell(ReadOnlySpan<CollisionPlane> inwardPlanes)
     {
         if (inwardPlanes.Length == 0)
         {
@@ -104,7 +103,7 @@ public static class BspBuilder
         var nodes = new BspNode[inwardPlanes.Length];
         for (int i = 0; i < nodes.Length; i++)
         {
-            Plane p = inwardPlanes[i];
+            CollisionPlane p = inwardPlanes[i];
             if (!VectorMath.IsFinite(p.N) || !float.IsFinite(p.D))
             {
                 throw new ArgumentException("Cell planes must be finite.", nameof(inwardPlanes));
@@ -117,14 +116,14 @@ public static class BspBuilder
     }
 
     /// <summary>The six inward planes of the box <paramref name="min"/>..<paramref name="max"/>.</summary>
-    public static Plane[] BoxCellPlanes(Vector3 min, Vector3 max) =>
+    public static CollisionPlane[] BoxCellPlanes(Vector3 min, Vector3 max) =>
     [
-        new Plane(new Vector3(1f, 0f, 0f), -min.X),
-        new Plane(new Vector3(-1f, 0f, 0f), max.X),
-        new Plane(new Vector3(0f, 1f, 0f), -min.Y),
-        new Plane(new Vector3(0f, -1f, 0f), max.Y),
-        new Plane(new Vector3(0f, 0f, 1f), -min.Z),
-        new Plane(new Vector3(0f, 0f, -1f), max.Z),
+        new CollisionPlane(new Vector3(1f, 0f, 0f), -min.X),
+        new CollisionPlane(new Vector3(-1f, 0f, 0f), max.X),
+        new CollisionPlane(new Vector3(0f, 1f, 0f), -min.Y),
+        new CollisionPlane(new Vector3(0f, -1f, 0f), max.Y),
+        new CollisionPlane(new Vector3(0f, 0f, 1f), -min.Z),
+        new CollisionPlane(new Vector3(0f, 0f, -1f), max.Z),
     ];
 
     private sealed class BuildState(Polygon[] polys, int maxLeafPolys)
@@ -136,7 +135,7 @@ public static class BspBuilder
         public int BuildNode(List<int> set, int depth)
         {
             Sphere bound = Bound(set);
-            if (set.Count > maxLeafPolys && depth < MaxDepth && TrySplit(set, out Plane plane, out List<int>? pos, out List<int>? neg))
+            if (set.Count > maxLeafPolys && depth < MaxDepth && TrySplit(set, out CollisionPlane plane, out List<int>? pos, out List<int>? neg))
             {
                 int self = Nodes.Count;
                 Nodes.Add(default);
@@ -152,7 +151,7 @@ public static class BspBuilder
             return Nodes.Count - 1;
         }
 
-        private bool TrySplit(List<int> set, out Plane plane, out List<int>? pos, out List<int>? neg)
+        private bool TrySplit(List<int> set, out CollisionPlane plane, out List<int>? pos, out List<int>? neg)
         {
             Vector3 min = new(float.MaxValue), max = new(float.MinValue);
             var centroids = new Vector3[set.Count];
@@ -177,7 +176,7 @@ public static class BspBuilder
                 Array.Sort(keys);
                 float c = keys[keys.Length / 2];
                 var n = new Vector3(axis == 0 ? 1f : 0f, axis == 1 ? 1f : 0f, axis == 2 ? 1f : 0f);
-                plane = new Plane(n, -c);
+                plane = new CollisionPlane(n, -c);
                 pos = new List<int>();
                 neg = new List<int>();
                 foreach (int pi in set)
@@ -186,8 +185,8 @@ public static class BspBuilder
                     foreach (Vector3 v in polys[pi].Vertices)
                     {
                         double d = plane.DotProduct(v);
-                        lo = System.Math.Min(lo, d);
-                        hi = System.Math.Max(hi, d);
+                        lo = Math.Min(lo, d);
+                        hi = Math.Max(hi, d);
                     }
 
                     if (lo >= -SideEpsilon && hi > SideEpsilon)
@@ -246,7 +245,7 @@ public static class BspBuilder
                 foreach (Vector3 v in polys[pi].Vertices)
                 {
                     double dx = (double)v.X - c.X, dy = (double)v.Y - c.Y, dz = (double)v.Z - c.Z;
-                    r = System.Math.Max(r, System.Math.Sqrt(dx * dx + dy * dy + dz * dz));
+                    r = Math.Max(r, Math.Sqrt(dx * dx + dy * dy + dz * dz));
                 }
             }
 

@@ -18,7 +18,7 @@ public struct BspNode
     public BspNodeType Type;
 
     /// <summary>The plane that splits the node's space (split nodes and cell BSP nodes). Retail: <c>splitting_plane</c>.</summary>
-    public Plane SplittingPlane;
+    public CollisionPlane SplittingPlane;
 
     /// <summary>Bounding sphere of the node's polygons. Retail: <c>sphere</c>.</summary>
     public Sphere Sphere;
@@ -45,7 +45,7 @@ public struct BspNode
     public readonly bool IsLeaf => Type == BspNodeType.Leaf;
 
     /// <summary>A split node.</summary>
-    public static BspNode Split(BspNodeType type, in Plane plane, in Sphere sphere, int posNode, int negNode) => new()
+    public static BspNode Split(BspNodeType type, in CollisionPlane plane, in Sphere sphere, int posNode, int negNode) => new()
     {
         Type = type,
         SplittingPlane = plane,

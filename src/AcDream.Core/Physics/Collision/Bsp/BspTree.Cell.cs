@@ -1,7 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Bsp;
 
@@ -35,7 +34,7 @@ public sealed partial class BspTree
         while (true)
         {
             ref readonly BspNode n = ref _nodes[i];
-            Plane p = n.SplittingPlane;
+            CollisionPlane p = n.SplittingPlane;
             double d = (double)p.N.Y * origin.Y + (double)p.N.Z * origin.Z + (double)p.N.X * origin.X + p.D;
             if (d <= PhysicsGlobals.Epsilon && d < -PhysicsGlobals.Epsilon)
             {
@@ -63,7 +62,7 @@ public sealed partial class BspTree
     {
         ref readonly BspNode n = ref _nodes[i];
         Vector3 c = sphere.Center;
-        Plane p = n.SplittingPlane;
+        CollisionPlane p = n.SplittingPlane;
         double d = (double)p.N.Y * c.Y + (double)p.N.Z * c.Z + (double)p.N.X * c.X + p.D;
         float r = (float)(sphere.Radius + (double)CellSphereMargin);
         if (d <= -r)

@@ -1,8 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
-using Plane = AcDream.Core.Physics.Collision.Primitives.Plane;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Bsp;
 
@@ -75,7 +74,7 @@ public sealed partial class BspTree
             {
                 Vector3 off = ScaledLocalToGlobal(path, valid.Center, s0.Center, scale);
                 path.AddOffsetToCheckPos(off);
-                Plane plane = PlaneSpace.LocalToGlobal(path.CheckPos, path.LocalSpacePos, walkable.Plane);
+                CollisionPlane plane = PlaneSpace.LocalToGlobal(path.CheckPos, path.LocalSpacePos, walkable.Plane);
                 plane.D = (float)(plane.D * (double)scale);
                 ci.SetContactPlane(plane, false);
                 ci.ContactPlaneCellId = path.CheckPos.ObjCellId;
@@ -338,7 +337,7 @@ public sealed partial class BspTree
         Vector3 o = path.CheckPos.Frame.Origin;
         path.CheckPos.Frame.Origin = new Vector3(off.X + o.X, off.Y + o.Y, off.Z + o.Z);
         path.CacheGlobalSphere(off);
-        Plane plane = PlaneSpace.LocalToGlobal(path.CheckPos, path.LocalSpacePos, walkable.Plane);
+        CollisionPlane plane = PlaneSpace.LocalToGlobal(path.CheckPos, path.LocalSpacePos, walkable.Plane);
         plane.D = (float)(plane.D * (double)scale);
         collisions.ContactPlaneValid = true;
         collisions.ContactPlane = plane;

@@ -1,6 +1,6 @@
 using System;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Bsp;
 

@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -44,7 +45,7 @@ public partial struct CylSphere
         Vector3 offset;
         if (!definite)
         {
-            if (System.Math.Abs(mz) < EpsD)
+            if (Math.Abs(mz) < EpsD)
             {
                 return TransitionState.Collided;
             }
@@ -71,7 +72,7 @@ public partial struct CylSphere
             {
                 // Outside the radius at that height: the side is hit first.
                 double a = (double)my * my + (double)mx * mx;
-                if (System.Math.Abs(a) < EpsD)
+                if (Math.Abs(a) < EpsD)
                 {
                     return TransitionState.Collided;
                 }
@@ -80,7 +81,7 @@ public partial struct CylSphere
                 double disc = b * b - ((double)oldY * oldY + (double)oldX * oldX - rr) * a;
                 if (disc >= 0.0 && a > EpsD)
                 {
-                    double s = System.Math.Sqrt(disc);
+                    double s = Math.Sqrt(disc);
                     time = b - s < 0.0 ? (s - ((double)my * oldY + (double)mx * oldX)) / a : (b - s) / a;
                     float tf = (float)time;
                     offset = new Vector3(mx * tf, my * tf, mz * tf);
@@ -91,7 +92,7 @@ public partial struct CylSphere
         }
         else if (cn.Z != 0f)
         {
-            if (System.Math.Abs(mz) < EpsD)
+            if (Math.Abs(mz) < EpsD)
             {
                 return TransitionState.Collided;
             }
@@ -112,7 +113,7 @@ public partial struct CylSphere
                 return TransitionState.Collided;
             }
 
-            double s = System.Math.Sqrt(disc);
+            double s = Math.Sqrt(disc);
             time = b - s < 0.0 ? (s - ((double)my * oldY + (double)mx * oldX)) / a : (b - s) / a;
             float tf = (float)time;
             offset = new Vector3(mx * tf, my * tf, mz * tf);

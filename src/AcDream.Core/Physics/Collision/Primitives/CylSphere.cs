@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
@@ -44,7 +44,7 @@ public partial struct CylSphere : IEquatable<CylSphere>
     // retail: CCylSphere::collides_with_sphere (acclient.c:361501)
     public readonly bool CollidesWithSphere(in Sphere checkPos, Vector3 disp, float radsum) =>
         (double)radsum * radsum >= (double)disp.X * disp.X + (double)disp.Y * disp.Y
-        && checkPos.Radius - EpsD + Height * 0.5 >= System.Math.Abs(Height * 0.5 - disp.Z);
+        && checkPos.Radius - EpsD + Height * 0.5 >= Math.Abs(Height * 0.5 - disp.Z);
 
     /// <summary>
     /// This cylinder (local to the object at <paramref name="p"/>, scaled by <paramref name="scale"/>) against the
@@ -171,7 +171,7 @@ public partial struct CylSphere : IEquatable<CylSphere>
         Vector3 block = path.GetCurrPosCheckPosBlockOffset();
         Vector3 gcc = path.GlobalCurrCenter[0];
         var movement = new Vector3(gcc.X - gs0.Center.X - block.X, gcc.Y - gs0.Center.Y - block.Y, gcc.Z - gs0.Center.Z - block.Z);
-        if (System.Math.Abs(movement.Z) < EpsD)
+        if (Math.Abs(movement.Z) < EpsD)
         {
             return TransitionState.Collided;
         }
@@ -212,7 +212,7 @@ public partial struct CylSphere : IEquatable<CylSphere>
         }
 
         double amt = (double)path.StepDownAmt * path.WalkInterp;
-        if (System.Math.Abs(amt) < EpsD)
+        if (Math.Abs(amt) < EpsD)
         {
             return TransitionState.Collided;
         }
@@ -249,8 +249,8 @@ public partial struct CylSphere : IEquatable<CylSphere>
         if ((double)radsum * radsum < oy * oy + ox * ox)
         {
             normal = new Vector3((float)ox, (float)oy, 0f);
-            return checkPos.Radius - EpsD + Height * 0.5 >= System.Math.Abs(Height * 0.5 - oz)
-                   || System.Math.Abs((double)oz - disp.Z) <= EpsD;
+            return checkPos.Radius - EpsD + Height * 0.5 >= Math.Abs(Height * 0.5 - oz)
+                   || Math.Abs((double)oz - disp.Z) <= EpsD;
         }
 
         normal = (double)disp.Z - oz <= 0.0 ? new Vector3(0f, 0f, 1f) : new Vector3(0f, 0f, -1f);

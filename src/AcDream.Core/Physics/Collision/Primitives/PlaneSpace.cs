@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -12,7 +12,7 @@ public static class PlaneSpace
     /// nearest the local origin (<c>-d·N</c>) is carried across.
     /// </summary>
     // retail: Plane::localtoglobal (acclient.c:467671)
-    public static Plane LocalToGlobal(in Position to, in Position from, in Plane localPlane)
+    public static CollisionPlane LocalToGlobal(in Position to, in Position from, in CollisionPlane localPlane)
     {
         double nd = -(double)localPlane.D;
         var point = new Vector3((float)(nd * localPlane.N.X), (float)(nd * localPlane.N.Y), (float)(nd * localPlane.N.Z));
@@ -24,6 +24,6 @@ public static class PlaneSpace
         Vector3 g = to.LocalToGlobal(from, point);
         double s = (double)gz * g.Z + (double)gy * g.Y;
         double d = -(s + (double)gx * g.X);
-        return new Plane(new Vector3(gx, gy, gz), (float)d);
+        return new CollisionPlane(new Vector3(gx, gy, gz), (float)d);
     }
 }

@@ -1,6 +1,7 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Bsp;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -24,7 +25,7 @@ public sealed partial class Polygon
     {
         double dist = Plane.N.Y * (double)sphere.Center.Y + Plane.N.Z * (double)sphere.Center.Z + Plane.N.X * (double)sphere.Center.X + Plane.D;
         double r = sphere.Radius - (double)PhysicsGlobals.Epsilon;
-        if (r < System.Math.Abs(dist))
+        if (r < Math.Abs(dist))
         {
             contactPoint = default;
             return false;
@@ -44,7 +45,7 @@ public sealed partial class Polygon
     {
         double dist = Plane.N.Y * (double)sphere.Center.Y + Plane.N.Z * (double)sphere.Center.Z + sphere.Center.X * (double)Plane.N.X + Plane.D;
         double r = sphere.Radius - (double)PhysicsGlobals.Epsilon;
-        if (!(r >= System.Math.Abs(dist)))
+        if (!(r >= Math.Abs(dist)))
         {
             contactPoint = default;
             return false;
@@ -217,13 +218,13 @@ public sealed partial class Polygon
     public double AdjustSphereToPoly(in Sphere checkPos, Vector3 currPos, Vector3 movement)
     {
         float dist = (float)((double)Plane.N.Z * currPos.Z + (double)Plane.N.Y * currPos.Y + currPos.X * (double)Plane.N.X + Plane.D);
-        if (!(checkPos.Radius <= System.Math.Abs(dist)))
+        if (!(checkPos.Radius <= Math.Abs(dist)))
         {
             return 1.0;
         }
 
         double dp = (double)Plane.N.Z * movement.Z + (double)Plane.N.Y * movement.Y + movement.X * (double)Plane.N.X;
-        if (!(System.Math.Abs(dp) >= PhysicsGlobals.Epsilon))
+        if (!(Math.Abs(dp) >= PhysicsGlobals.Epsilon))
         {
             return 0.0;
         }

@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -62,7 +62,7 @@ public sealed partial class Polygon
                 float nx = (float)((double)ez * n.Y - (double)ey * n.Z);
                 float ny = (float)((double)ex * n.Z - (double)ez * n.X);
                 float nz = (float)((double)ey * n.X - (double)ex * n.Y);
-                double len = System.Math.Sqrt((double)nx * nx + (double)ny * ny + (double)nz * nz);
+                double len = Math.Sqrt((double)nx * nx + (double)ny * ny + (double)nz * nz);
                 normal = new Vector3((float)(1.0 / len * nx), (float)(1.0 / len * ny), (float)(1.0 / len * nz));
                 return true;
             }
@@ -78,7 +78,7 @@ public sealed partial class Polygon
     {
         Vector3 n = Plane.N;
         double angleUp = (double)n.Y * up.Y + (double)n.Z * up.Z + (double)n.X * up.X;
-        if (System.Math.Abs(angleUp) < PhysicsGlobals.Epsilon)
+        if (Math.Abs(angleUp) < PhysicsGlobals.Epsilon)
         {
             dropped = default;
             return false;

@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -23,7 +23,7 @@ public sealed partial class Polygon
     private readonly ushort[] _vertexIds;
 
     /// <summary>The polygon's plane; set by <see cref="MakePlane"/>. Retail: <c>plane</c>.</summary>
-    public Plane Plane;
+    public CollisionPlane Plane;
 
     /// <summary>
     /// Creates a polygon from its vertex positions and their indices in the owner's vertex array, and computes its plane.
@@ -71,7 +71,7 @@ public sealed partial class Polygon
     public ReadOnlySpan<ushort> VertexIds => _vertexIds;
 
     /// <summary>
-    /// Computes <see cref="Plane"/> from the vertices: the normal is the normalised sum of the fan cross products
+    /// Computes <see cref="CollisionPlane"/> from the vertices: the normal is the normalised sum of the fan cross products
     /// <c>(v[t] - v[0]) × (v[t+1] - v[0])</c>, and d is minus the mean of <c>N·v</c> over all vertices.
     /// </summary>
     /// <remarks>
@@ -104,7 +104,7 @@ public sealed partial class Polygon
             sumZ = (float)(by * ax - ay * bx + sumZ);
         }
 
-        double inv = 1.0 / System.Math.Sqrt((double)sumZ * sumZ + sumY * sumY + sumX * sumX);
+        double inv = 1.0 / Math.Sqrt((double)sumZ * sumZ + sumY * sumY + sumX * sumX);
         float invF = (float)inv;
         float nx = (float)(inv * sumX);
         float ny = (float)(invF * sumY);
@@ -116,7 +116,7 @@ public sealed partial class Polygon
             s = s + (double)nz * v[i].Z + (double)ny * v[i].Y + (double)nx * v[i].X;
         }
 
-        Plane = new Plane(new Vector3(nx, ny, nz), (float)-(s / n));
+        Plane = new CollisionPlane(new Vector3(nx, ny, nz), (float)-(s / n));
     }
 
     /// <summary>

@@ -1,5 +1,6 @@
+using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -36,7 +37,7 @@ public partial struct Sphere
             return -1.0;
         }
 
-        double s = System.Math.Sqrt(disc);
+        double s = Math.Sqrt(disc);
         if (b - s < 0.0)
         {
             return (s - ((double)disp.Z * movement.Z + (double)disp.Y * movement.Y + (double)movement.X * disp.X)) / a;
@@ -183,13 +184,13 @@ public partial struct Sphere
         float r = (float)(radsum + EpsD);
         double a = (double)movement.Z * movement.Z + (double)movement.Y * movement.Y + (double)movement.X * movement.X;
         double b = -((double)movement.Y * disp.Y + (double)movement.X * disp.X + (double)movement.Z * disp.Z);
-        if (System.Math.Abs(a) < EpsD)
+        if (Math.Abs(a) < EpsD)
         {
             return TransitionState.Collided;
         }
 
         double d2 = (double)disp.Y * disp.Y + (double)disp.X * disp.X + (double)disp.Z * disp.Z - (double)r * r;
-        double num = System.Math.Sqrt(b * b - d2 * a)
+        double num = Math.Sqrt(b * b - d2 * a)
                      - ((double)movement.Y * disp.Y + (double)movement.X * disp.X + (double)movement.Z * disp.Z);
         if (num > 1.0)
         {
@@ -230,7 +231,7 @@ public partial struct Sphere
 
     /// <summary>The plane with normal <paramref name="n"/> through <paramref name="point"/>.</summary>
     // retail: Plane::Plane(Vector3*, Vector3*) (acclient.c:358518)
-    internal static Plane PlaneThrough(Vector3 n, Vector3 point) =>
+    internal static CollisionPlane PlaneThrough(Vector3 n, Vector3 point) =>
         new(n, (float)-((double)point.Z * n.Z + (double)point.Y * n.Y + (double)point.X * n.X));
 
     /// <summary>During a step down: lifts the check sphere onto the top of this one (limited by what is left of the step
@@ -249,13 +250,13 @@ public partial struct Sphere
         }
 
         float amt = (float)((double)path.StepDownAmt * path.WalkInterp);
-        if (System.Math.Abs(amt) < EpsD)
+        if (Math.Abs(amt) < EpsD)
         {
             return TransitionState.Collided;
         }
 
         float r = (float)(radsum + EpsD);
-        double t = (System.Math.Sqrt((double)r * r - ((double)tx + ty)) - disp.Z) / amt;
+        double t = (Math.Sqrt((double)r * r - ((double)tx + ty)) - disp.Z) / amt;
         double interp = (1.0 - t) * path.WalkInterp;
         if (interp >= path.WalkInterp || interp < -0.1)
         {

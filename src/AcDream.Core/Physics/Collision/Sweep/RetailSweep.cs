@@ -1,6 +1,6 @@
 using System;
 using AcDream.Core.Physics.Cells;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;

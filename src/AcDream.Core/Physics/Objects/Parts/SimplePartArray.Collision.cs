@@ -2,7 +2,7 @@ using System;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Objects.Parts;
 
@@ -115,8 +115,8 @@ public sealed partial class SimplePartArray : IPartCollision
         double reach = 0.0;
         foreach (Sphere s in _spheres)
         {
-            double r = (double)System.Math.Abs(s.Center.X) + System.Math.Abs(s.Center.Y) + System.Math.Abs(s.Center.Z) + System.Math.Abs(s.Radius);
-            reach = System.Math.Max(reach, r);
+            double r = (double)Math.Abs(s.Center.X) + Math.Abs(s.Center.Y) + Math.Abs(s.Center.Z) + Math.Abs(s.Radius);
+            reach = Math.Max(reach, r);
         }
 
         // Rounded up to the next float, so that the stored value never falls short of the double bound.

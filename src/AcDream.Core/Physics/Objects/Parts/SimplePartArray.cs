@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Objects.Parts;
 
@@ -218,7 +218,7 @@ public sealed partial class SimplePartArray : IPartArray
         }
 
         // sign = quantum: |quantum|, negated only for a negative sign (never, here).
-        double s = System.Math.Abs((double)quantum);
+        double s = Math.Abs((double)quantum);
         if (quantum < 0f)
         {
             s = -s;

@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// The valid domains of the values the public API accepts (positions, frames, scales, clock times, animation velocity): a
@@ -70,8 +70,8 @@ public static class InputLimits
     /// [−<see cref="OutdoorMargin"/>, 192 + <see cref="OutdoorMargin"/>].</summary>
     internal static bool IsOriginInDomain(uint cellId, Vector3 origin)
     {
-        if (!(System.Math.Abs(origin.X) <= MaxCoordinate && System.Math.Abs(origin.Y) <= MaxCoordinate
-              && System.Math.Abs(origin.Z) <= MaxCoordinate))
+        if (!(Math.Abs(origin.X) <= MaxCoordinate && Math.Abs(origin.Y) <= MaxCoordinate
+              && Math.Abs(origin.Z) <= MaxCoordinate))
         {
             return false; // also NaN
         }
@@ -120,8 +120,8 @@ public static class InputLimits
     /// <summary>True when <paramref name="frame"/> is a valid child frame: unit quaternion, each origin component within
     /// ±<see cref="MaxChildOffset"/>.</summary>
     internal static bool IsChildFrameInDomain(in Frame frame) =>
-        System.Math.Abs(frame.Origin.X) <= MaxChildOffset && System.Math.Abs(frame.Origin.Y) <= MaxChildOffset
-        && System.Math.Abs(frame.Origin.Z) <= MaxChildOffset && IsRotationValid(frame);
+        Math.Abs(frame.Origin.X) <= MaxChildOffset && Math.Abs(frame.Origin.Y) <= MaxChildOffset
+        && Math.Abs(frame.Origin.Z) <= MaxChildOffset && IsRotationValid(frame);
 
     /// <summary>True when <paramref name="scale"/> is in [<see cref="MinScale"/>, <see cref="MaxScale"/>].</summary>
     internal static bool IsScaleInDomain(float scale) => scale >= MinScale && scale <= MaxScale;
@@ -137,7 +137,7 @@ public static class InputLimits
     }
 
     /// <summary>True when <paramref name="time"/> is a clock time in (−<see cref="MaxClockTime"/>, <see cref="MaxClockTime"/>).</summary>
-    internal static bool IsClockTimeInDomain(double time) => System.Math.Abs(time) < MaxClockTime;
+    internal static bool IsClockTimeInDomain(double time) => Math.Abs(time) < MaxClockTime;
 
     /// <summary>True when <paramref name="n"/> is finite and, when <paramref name="valid"/>, of unit length (|n|² within
     /// 5 × EPSILON of 1, the tolerance of <see cref="Frame.IsValid"/>).</summary>
@@ -149,7 +149,7 @@ public static class InputLimits
         }
 
         double m = (double)n.X * n.X + (double)n.Y * n.Y + (double)n.Z * n.Z;
-        return !valid || System.Math.Abs(m - 1.0) <= PhysicsGlobals.Epsilon * 5.0;
+        return !valid || Math.Abs(m - 1.0) <= PhysicsGlobals.Epsilon * 5.0;
     }
 
     /// <summary>True when every component is finite.</summary>

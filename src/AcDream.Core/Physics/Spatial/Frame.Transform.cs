@@ -1,7 +1,8 @@
+using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 public partial struct Frame
 {
@@ -152,11 +153,11 @@ public partial struct Frame
         }
         else
         {
-            double omega = System.Math.Acos(cosom);
+            double omega = Math.Acos(cosom);
             double oneMinusT = 1.0 - t;
-            double invSin = 1.0 / System.Math.Sin(omega);
-            scale0 = invSin * System.Math.Sin(omega * oneMinusT);
-            scale1 = System.Math.Sin(t * omega) * invSin;
+            double invSin = 1.0 / Math.Sin(omega);
+            scale0 = invSin * Math.Sin(omega * oneMinusT);
+            scale1 = Math.Sin(t * omega) * invSin;
             if (scale0 < 0.0 || scale0 > 1.0 || scale1 < 0.0 || scale1 > 1.0)
             {
                 scale0 = oneMinusT;

@@ -1,7 +1,8 @@
+using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// The first half of <c>Frame::grotate</c>: the rotation quaternion (c, f, g, h) = (cos θ/2, sin θ/2 · w/θ) of an angular
@@ -43,10 +44,10 @@ internal readonly struct AxisAngle
             return false;
         }
 
-        double theta = System.Math.Sqrt(mag2);
+        double theta = Math.Sqrt(mag2);
         float thetaInv = (float)(1.0 / theta);
         double half = theta * 0.5;
-        (double s, double cosHalf) = System.Math.SinCos(half); // the same bits as Sin and Cos (SinCosEquivalenceTests)
+        (double s, double cosHalf) = Math.SinCos(half); // the same bits as Sin and Cos (SinCosEquivalenceTests)
         float c = (float)cosHalf;
         float f = (float)(s * w.X * thetaInv);
         float g = (float)(thetaInv * s * w.Y);

@@ -1,6 +1,7 @@
+using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 public partial struct Frame
 {
@@ -24,7 +25,7 @@ public partial struct Frame
     {
         double x = ((double)_m6 + _m0) * 0.0 + _m3;
         double y = ((double)_m7 + _m1) * 0.0 + _m4;
-        return HeadingMath.CompassFromAtan2(System.Math.Atan2(y, x));
+        return HeadingMath.CompassFromAtan2(Math.Atan2(y, x));
     }
 
     /// <summary>
@@ -36,7 +37,7 @@ public partial struct Frame
     {
         float dz = (float)(((double)_m8 + _m2) * 0.0 + _m5);
         double rad = degrees * HeadingMath.DegToRad;
-        (double sin, double cos) = System.Math.SinCos(rad); // the same bits as Sin and Cos (SinCosEquivalenceTests)
+        (double sin, double cos) = Math.SinCos(rad); // the same bits as Sin and Cos (SinCosEquivalenceTests)
         var direction = new Vector3((float)sin, (float)cos, dz);
         SetVectorHeading(direction);
     }
@@ -54,10 +55,10 @@ public partial struct Frame
             return;
         }
 
-        float yaw = (float)(-HeadingMath.CompassFromAtan2(System.Math.Atan2(n.Y, n.X)) * HeadingMath.DegToRad);
+        float yaw = (float)(-HeadingMath.CompassFromAtan2(Math.Atan2(n.Y, n.X)) * HeadingMath.DegToRad);
         // Divergence: retail passes n.z straight to asin; a normalised z one ulp past ±1 would give NaN there and set_rotate
         // would silently keep the old rotation. We clamp to [-1, 1] so such a vector still sets the heading.
-        double sinPitch = System.Math.Clamp((double)n.Z, -1.0, 1.0);
+        double sinPitch = Math.Clamp((double)n.Z, -1.0, 1.0);
         float pitch = (float)(ExactAsin(sinPitch) * HeadingMath.RadToDeg * HeadingMath.DegToRad);
         EulerSetRotateXyzNoRoll(pitch, yaw);
     }
@@ -71,10 +72,10 @@ public partial struct Frame
         double ti = x * 0.5;
         const double tj = 0.0;
         float th = (float)(z * 0.5);
-        (double sinTi, double cosTi) = IsPositiveZero(ti) ? (0.0, 1.0) : System.Math.SinCos(ti);
+        (double sinTi, double cosTi) = IsPositiveZero(ti) ? (0.0, 1.0) : Math.SinCos(ti);
         float ci = (float)cosTi;
         const float cj = 1f;
-        (double sh, double cosTh) = System.Math.SinCos(th);
+        (double sh, double cosTh) = Math.SinCos(th);
         float ch = (float)cosTh;
         float si = (float)sinTi;
         const double sj = tj;
@@ -91,7 +92,7 @@ public partial struct Frame
 
     // sin, cos and asin have exact values at +0 (C99 Annex F: sin(+0) = +0, cos(+0) = 1, asin(+0) = +0), written out so that
     // a level frame (pitch 0) skips the library calls.
-    private static double ExactAsin(double x) => IsPositiveZero(x) ? 0.0 : System.Math.Asin(x);
+    private static double ExactAsin(double x) => IsPositiveZero(x) ? 0.0 : Math.Asin(x);
 
     private static bool IsPositiveZero(double x) => System.BitConverter.DoubleToInt64Bits(x) == 0L;
 
@@ -131,12 +132,12 @@ public partial struct Frame
         double ti = x * 0.5;
         double tj = y * 0.5;
         float th = (float)(zv * 0.5);
-        float ci = (float)System.Math.Cos(ti);
-        float cj = (float)System.Math.Cos(tj);
-        float ch = (float)System.Math.Cos(th);
-        float si = (float)System.Math.Sin(ti);
-        double sj = System.Math.Sin(tj);
-        double sh = System.Math.Sin(th);
+        float ci = (float)Math.Cos(ti);
+        float cj = (float)Math.Cos(tj);
+        float ch = (float)Math.Cos(th);
+        float si = (float)Math.Sin(ti);
+        double sj = Math.Sin(tj);
+        double sh = Math.Sin(th);
         float cc = ch * ci;
         float cs = (float)(ci * sh);
         float sc = si * ch;

@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Math;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -10,7 +10,7 @@ namespace AcDream.Core.Physics.Collision.Primitives;
 /// </summary>
 /// <remarks>All evaluations follow retail's operand order (z, y, x, then d) in double, so no fused multiply-add can change
 /// a result; values retail stored as float are rounded to float at the same place.</remarks>
-public struct Plane : IEquatable<Plane>
+public struct CollisionPlane : IEquatable<CollisionPlane>
 {
     /// <summary>The unit normal. Retail: <c>N</c>.</summary>
     public Vector3 N;
@@ -19,7 +19,7 @@ public struct Plane : IEquatable<Plane>
     public float D;
 
     /// <summary>Creates a plane from its normal and distance term (no normalisation).</summary>
-    public Plane(Vector3 n, float d)
+    public CollisionPlane(Vector3 n, float d)
     {
         N = n;
         D = d;
@@ -55,7 +55,7 @@ public struct Plane : IEquatable<Plane>
     {
         double den = (double)dir.Z * N.Z + (double)dir.Y * N.Y + (double)dir.X * N.X;
         time = 0.0;
-        if (System.Math.Abs(den) < PhysicsGlobals.Epsilon)
+        if (Math.Abs(den) < PhysicsGlobals.Epsilon)
         {
             return false;
         }
@@ -72,7 +72,7 @@ public struct Plane : IEquatable<Plane>
     // retail: Plane::set_height (acclient.c:351337)
     public readonly bool SetHeight(ref Vector3 v)
     {
-        if (System.Math.Abs(N.Z) <= PhysicsGlobals.Epsilon)
+        if (Math.Abs(N.Z) <= PhysicsGlobals.Epsilon)
         {
             return false;
         }
@@ -82,7 +82,7 @@ public struct Plane : IEquatable<Plane>
     }
 
     /// <inheritdoc />
-    public readonly bool Equals(Plane other) => N.Equals(other.N) && D.Equals(other.D);
+    public readonly bool Equals(CollisionPlane other) => N.Equals(other.N) && D.Equals(other.D);
 
     /// <inheritdoc />
     public override readonly bool Equals(object? obj) => obj is Plane p && Equals(p);
@@ -91,10 +91,10 @@ public struct Plane : IEquatable<Plane>
     public override readonly int GetHashCode() => HashCode.Combine(N, D);
 
     /// <summary>Bitwise equality of normal and distance.</summary>
-    public static bool operator ==(Plane left, Plane right) => left.Equals(right);
+    public static bool operator ==(CollisionPlane left, CollisionPlane right) => left.Equals(right);
 
     /// <summary>Bitwise inequality of normal and distance.</summary>
-    public static bool operator !=(Plane left, Plane right) => !left.Equals(right);
+    public static bool operator !=(CollisionPlane left, CollisionPlane right) => !left.Equals(right);
 
     /// <inheritdoc />
     public override readonly string ToString() =>

@@ -2,7 +2,7 @@ using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// A rigid transform in retail's layout: an origin, a unit quaternion stored w, x, y, z, and the cached 3x3
@@ -176,7 +176,7 @@ public partial struct Frame : IEquatable<Frame>
     private readonly bool IsValidWith(float qw, float qx, float qy, float qz)
     {
         float norm = qz * qz + qy * qy + qx * qx + qw * qw;
-        return System.Math.Abs(norm - 1.0) <= ValidNormTolerance
+        return Math.Abs(norm - 1.0) <= ValidNormTolerance
                && !float.IsNaN(Origin.X) && !float.IsNaN(Origin.Y) && !float.IsNaN(Origin.Z);
     }
 
@@ -206,7 +206,7 @@ public partial struct Frame : IEquatable<Frame>
     {
         // Retail stores the normalised quaternion, tests IsValid and restores the old one on failure; testing the new values
         // before storing them is the same.
-        double inv = 1.0 / System.Math.Sqrt((double)qw * qw + (double)qx * qx + (double)qy * qy + (double)qz * qz);
+        double inv = 1.0 / Math.Sqrt((double)qw * qw + (double)qx * qx + (double)qy * qy + (double)qz * qz);
         float w = (float)(qw * inv);
         float x = (float)(qx * inv);
         float y = (float)(qy * inv);
@@ -323,14 +323,14 @@ public partial struct Frame : IEquatable<Frame>
     public readonly bool IsEqual(in Frame rhs)
     {
         const float eps = PhysicsGlobals.Epsilon;
-        bool originEqual = System.Math.Abs(Origin.X - rhs.Origin.X) <= eps
-                           && System.Math.Abs(Origin.Y - rhs.Origin.Y) <= eps
-                           && System.Math.Abs(Origin.Z - rhs.Origin.Z) <= eps;
+        bool originEqual = Math.Abs(Origin.X - rhs.Origin.X) <= eps
+                           && Math.Abs(Origin.Y - rhs.Origin.Y) <= eps
+                           && Math.Abs(Origin.Z - rhs.Origin.Z) <= eps;
         return originEqual
-               && System.Math.Abs(_qw - rhs._qw) < eps
-               && System.Math.Abs(_qx - rhs._qx) < eps
-               && System.Math.Abs(_qy - rhs._qy) < eps
-               && System.Math.Abs(_qz - rhs._qz) < eps;
+               && Math.Abs(_qw - rhs._qw) < eps
+               && Math.Abs(_qx - rhs._qx) < eps
+               && Math.Abs(_qy - rhs._qy) < eps
+               && Math.Abs(_qz - rhs._qz) < eps;
     }
 
     /// <summary>Exact component-wise equality of origin, quaternion and cache (float equality: -0 equals +0 and NaN equals NaN;

@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// A place in the world: the id of the cell that contains it and a <see cref="Frame"/> local to that cell's landblock
@@ -74,7 +74,7 @@ public struct Position : IEquatable<Position>
     public readonly float XYDistance(in Position p)
     {
         Vector3 v = GetOffset(p);
-        return (float)System.Math.Sqrt((double)v.Y * v.Y + (double)v.X * v.X);
+        return (float)Math.Sqrt((double)v.Y * v.Y + (double)v.X * v.X);
     }
 
     /// <summary>Compass heading (degrees clockwise from north) from this position to <paramref name="p"/>; 0 when they coincide in x, y.</summary>
@@ -88,7 +88,7 @@ public struct Position : IEquatable<Position>
             return 0.0;
         }
 
-        return HeadingMath.CompassFromAtan2(System.Math.Atan2(d.Y, d.X));
+        return HeadingMath.CompassFromAtan2(Math.Atan2(d.Y, d.X));
     }
 
     /// <summary>The compass heading this position's frame faces.</summary>
@@ -174,7 +174,7 @@ public struct Position : IEquatable<Position>
     public static float CylinderDistance(float r1, float h1, in Position p1, float r2, float h2, in Position p2)
     {
         Vector3 off = p1.GetOffset(p2);
-        float radial = (float)(System.Math.Sqrt((double)off.X * off.X + (double)off.Y * off.Y + (double)off.Z * off.Z) - ((double)r1 + r2));
+        float radial = (float)(Math.Sqrt((double)off.X * off.X + (double)off.Y * off.Y + (double)off.Z * off.Z) - ((double)r1 + r2));
         double top, bottom;
         if (p1.Frame.Origin.Z <= p2.Frame.Origin.Z)
         {
@@ -191,10 +191,10 @@ public struct Position : IEquatable<Position>
         if (vertical <= 0.0)
         {
             // The height ranges overlap.
-            return radial <= 0f ? (float)-System.Math.Sqrt(vertical * vertical + (double)radial * radial) : radial;
+            return radial <= 0f ? (float)-Math.Sqrt(vertical * vertical + (double)radial * radial) : radial;
         }
 
-        return radial > 0f ? (float)System.Math.Sqrt(vertical * vertical + (double)radial * radial) : (float)vertical;
+        return radial > 0f ? (float)Math.Sqrt(vertical * vertical + (double)radial * radial) : (float)vertical;
     }
 
     /// <summary>Distance between two spheres' surfaces ignoring height: |offset| - (r1 + r2).</summary>
@@ -202,7 +202,7 @@ public struct Position : IEquatable<Position>
     public static float CylinderDistanceNoZ(float r1, in Position p1, float r2, in Position p2)
     {
         Vector3 off = p1.GetOffset(p2);
-        return (float)(System.Math.Sqrt((double)off.X * off.X + (double)off.Y * off.Y + (double)off.Z * off.Z) - ((double)r1 + r2));
+        return (float)(Math.Sqrt((double)off.X * off.X + (double)off.Y * off.Y + (double)off.Z * off.Z) - ((double)r1 + r2));
     }
 
     /// <inheritdoc />

@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// How the Frame operations of the tick evaluate their intermediates — a fidelity switch whose cost and error the

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 // Rotation updates that skip set_rotate's normalisation, for the PhysicsProfile.RenormaliseEvery fidelity switch. NOT
 // retail: retail renormalises on every rotation change. The product is stored as is (its norm drifts by rounding) and

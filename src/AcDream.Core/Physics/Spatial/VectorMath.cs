@@ -1,6 +1,7 @@
+using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// Retail's small vector helpers (<c>AC1Legacy::Vector3</c>), written component by component in retail's order with
@@ -19,7 +20,7 @@ internal static class VectorMath
     public static float LengthSquared(Vector3 v) => (float)((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
 
     /// <summary>Length sqrt(x² + y² + z²), evaluated in double and rounded to float.</summary>
-    public static float Length(Vector3 v) => (float)System.Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
+    public static float Length(Vector3 v) => (float)Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
 
     /// <summary>Dot product a·b, evaluated in double (x, y, z order) and rounded to float.</summary>
     public static float Dot(Vector3 a, Vector3 b) => (float)((double)a.X * b.X + (double)a.Y * b.Y + (double)a.Z * b.Z);
@@ -37,7 +38,7 @@ internal static class VectorMath
     // retail: AC1Legacy::Vector3::normalize_check_small (acclient.c:143621)
     public static bool NormalizeCheckSmall(ref Vector3 v)
     {
-        double len = System.Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
+        double len = Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
         if (len >= PhysicsGlobals.Epsilon)
         {
             double inv = 1.0 / len;
@@ -52,7 +53,7 @@ internal static class VectorMath
     // retail: AC1Legacy::Vector3::normalize (acclient.c:143600)
     public static Vector3 Normalize(Vector3 v)
     {
-        double len = System.Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
+        double len = Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
         float x = (float)(1.0 / len * v.X);
         float y = (float)(1.0 / len * v.Y);
         float z = (float)(1.0 / len * v.Z);
@@ -62,14 +63,14 @@ internal static class VectorMath
     /// <summary>True when every component's magnitude is below EPSILON.</summary>
     // retail: AC1Legacy::Vector3::is_zero (acclient.c:315576)
     public static bool IsZero(Vector3 v) =>
-        System.Math.Abs(v.X) < PhysicsGlobals.Epsilon
-        && System.Math.Abs(v.Y) < PhysicsGlobals.Epsilon
-        && System.Math.Abs(v.Z) < PhysicsGlobals.Epsilon;
+        Math.Abs(v.X) < PhysicsGlobals.Epsilon
+        && Math.Abs(v.Y) < PhysicsGlobals.Epsilon
+        && Math.Abs(v.Z) < PhysicsGlobals.Epsilon;
 
     /// <summary>True when a and b agree within <paramref name="epsilon"/> on every axis (inclusive).</summary>
     // retail: Vector3Math::AreEqual (acclient.c:96721)
     public static bool AreEqual(Vector3 a, Vector3 b, float epsilon) =>
-        System.Math.Abs(a.X - b.X) <= epsilon
-        && System.Math.Abs(a.Y - b.Y) <= epsilon
-        && System.Math.Abs(a.Z - b.Z) <= epsilon;
+        Math.Abs(a.X - b.X) <= epsilon
+        && Math.Abs(a.Y - b.Y) <= epsilon
+        && Math.Abs(a.Z - b.Z) <= epsilon;
 }

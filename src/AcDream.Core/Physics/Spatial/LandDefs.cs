@@ -1,6 +1,7 @@
+using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// Retail land geometry: landblocks, outdoor cells and cell ids, ported from <c>LandDefs</c>
@@ -230,12 +231,12 @@ public static class LandDefs
             return false;
         }
 
-        if (System.Math.Abs(loc.X) < PhysicsGlobals.Epsilon)
+        if (Math.Abs(loc.X) < PhysicsGlobals.Epsilon)
         {
             loc.X = 0f;
         }
 
-        if (System.Math.Abs(loc.Y) < PhysicsGlobals.Epsilon)
+        if (Math.Abs(loc.Y) < PhysicsGlobals.Epsilon)
         {
             loc.Y = 0f;
         }
@@ -247,8 +248,8 @@ public static class LandDefs
         }
 
         cellId = LCoordToGid(x, y);
-        loc.X = (float)(loc.X - System.Math.Floor(loc.X / (double)BlockLength) * BlockLength);
-        loc.Y = (float)(loc.Y - System.Math.Floor(loc.Y / (double)BlockLength) * BlockLength);
+        loc.X = (float)(loc.X - Math.Floor(loc.X / (double)BlockLength) * BlockLength);
+        loc.Y = (float)(loc.Y - Math.Floor(loc.Y / (double)BlockLength) * BlockLength);
         return true;
     }
 
@@ -269,5 +270,5 @@ public static class LandDefs
     }
 
     // Retail converts floor() through __ftol2 to a 64-bit integer and keeps the low 32 bits.
-    private static int FloorToInt(double v) => unchecked((int)(long)System.Math.Floor(v));
+    private static int FloorToInt(double v) => unchecked((int)(long)Math.Floor(v));
 }

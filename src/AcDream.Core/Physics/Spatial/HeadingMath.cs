@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// Retail's compass-heading arithmetic: degrees clockwise from north (+Y), in [0, 360).

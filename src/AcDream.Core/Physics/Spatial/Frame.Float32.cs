@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Math;
+namespace AcDream.Core.Physics.Spatial;
 
 // Plain-float32 variants of the Frame operations the tick uses most, for the ArithmeticMode.Float32 fidelity switch.
 // Same formulas and operand order as the retail versions, but every product and sum rounds to float.

@@ -1,4 +1,6 @@
-namespace AcDream.Core.Physics.Math;
+using System;
+
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// Every retail physics constant used by the object tick and the collision sweep, with its unit,
@@ -59,7 +61,7 @@ public static class PhysicsGlobals
     /// instead of radians, so the value is cos of 3437.7 radians = 0.66417414 (about 48.4 degrees), not cos 60.
     /// Float bits 0x3F2A0751.
     /// </summary>
-    public static readonly float FloorZ = (float)System.Math.Cos(3437.746770784939);
+    public static readonly float FloorZ = (float)Math.Cos(3437.746770784939);
 
     /// <summary>
     /// Smallest normal Z on which a falling object may land (cos 85 degrees). Retail: <c>z_for_landing = 0.0871557</c>
