@@ -47,7 +47,7 @@ public class CollisionResponseTests
         var ci = new CollisionInfo();
         ci.SetCollisionNormal(new Vector3(0f, 0f, 1f));
         // v·n = -5 < 0: v += -(v·n)(1 + 0.05) n = (0, 0, -5 + 5.25) = (0, 0, 0.25).
-        sweep.HandleAllCollisions(obj, ci, false, false);
+        obj.HandleAllCollisions(sweep, ci, false, false);
         Assert.Equal(0.25f, obj.Velocity.Z, 6);
     }
 
@@ -59,7 +59,7 @@ public class CollisionResponseTests
         obj.SetVelocity(new Vector3(3f, 0f, -5f));
         var ci = new CollisionInfo();
         ci.SetCollisionNormal(new Vector3(0f, 0f, 1f));
-        sweep.HandleAllCollisions(obj, ci, false, false);
+        obj.HandleAllCollisions(sweep, ci, false, false);
         Assert.Equal(Vector3.Zero, obj.Velocity);
     }
 
@@ -75,7 +75,7 @@ public class CollisionResponseTests
         var (sweep, obj) = Scene();
         obj.SetVelocity(new Vector3(1f, 0f, 0f));
         var ci = new CollisionInfo { FramesStationaryFall = frames };
-        sweep.HandleAllCollisions(obj, ci, false, false);
+        obj.HandleAllCollisions(sweep, ci, false, false);
         const TransientState bits = TransientState.StationaryFall | TransientState.StationaryStop | TransientState.StationaryStuck;
         Assert.Equal(expected, obj.TransientState & bits);
         Assert.Equal(stopped ? Vector3.Zero : new Vector3(1f, 0f, 0f), obj.Velocity);

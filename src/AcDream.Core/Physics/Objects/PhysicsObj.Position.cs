@@ -1,4 +1,5 @@
 using System;
+using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Spatial;
 
@@ -195,9 +196,11 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>
-    /// Commits a successful sweep or placement: cell, frame, contact plane, CONTACT / WATER_CONTACT / ON_WALKABLE / SLIDING,
-    /// acceleration, then the collision reports and cell shadows through the world's <see cref="CollisionSweep"/>.
-    /// A result with no cell sends the object to the lost cell.
+    /// Commits the result of a client's own sweep or placement: cell, frame, contact plane, CONTACT / WATER_CONTACT /
+    /// ON_WALKABLE / SLIDING and acceleration. A result with no cell sends the object to the lost cell. A result carries no
+    /// collisions: nothing is reported and the velocity is not bounced (a client sweep reports its own collisions). In a
+    /// world that sweeps with a <see cref="RetailSweep"/> the object's shadows then follow it: it is re-shadowed where it
+    /// stands (<see cref="RetailSweep.CalcCrossCells"/>).
     /// </summary>
     /// <param name="t">The result: <see cref="TransitionResult.CurrentPosition"/> in the domain of <see cref="StorePosition"/>,
     /// finite contact-plane and sliding normals, of unit length (|n|² within 5 × EPSILON of 1) when flagged valid, and a finite
@@ -216,12 +219,17 @@ public sealed partial class PhysicsObj
                 nameof(t));
         }
 
-        CommitTransitionInternal(t);
+        CommitTransitionInternal(t, null, null);
     }
 
-    /// <summary>The engine's commit of a sweep result of its own (no domain check).</summary>
+    /// <summary>
+    /// The engine's commit (no domain check) of <paramref name="t"/>, which <paramref name="transit"/> of
+    /// <paramref name="sweep"/>'s pool produced, or, both null, a result without a transition (a client's sweep, a free-space
+    /// step). The transition's collisions are reported and its cells take the shadows; without one, see
+    /// <see cref="CommitTransition"/>.
+    /// </summary>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
-    internal void CommitTransitionInternal(in TransitionResult t)
+    internal void CommitTransitionInternal(in TransitionResult t, RetailSweep? sweep, Transition? transit)
     {
         Touch();
         bool prevOnWalkable = (_transientState & TransientState.OnWalkable) != 0;
@@ -297,11 +305,20 @@ public sealed partial class PhysicsObj
             _transientState &= ~TransientState.Sliding;
         }
 
-        World.Sweep.HandleAllCollisions(this, prevContact, prevOnWalkable);
-        // non-retail: a collision listener may have removed the object from its world: it casts no shadow any more
-        if (CellId != 0 && !RemovedFromWorld)
+        if (transit is not null)
         {
-            World.Sweep.UpdateCellShadows(this);
+            HandleAllCollisions(sweep!, transit.CollisionInfo, prevContact, prevOnWalkable);
+            // non-retail: a collision listener may have removed the object from its world: it casts no shadow any more
+            if (CellId != 0 && !RemovedFromWorld)
+            {
+                UpdateCellShadows(sweep!, transit);
+            }
+        }
+        else if (CellId != 0 && !RemovedFromWorld && World.Sweep is RetailSweep cells)
+        {
+            // non-retail: a result without a transition has no collisions to respond to and no cells of its own: the
+            // object is shadowed where it stands
+            CalcCrossCells(cells);
         }
     }
 

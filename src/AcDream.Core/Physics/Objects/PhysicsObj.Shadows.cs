@@ -144,22 +144,22 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>
-    /// Updates the object's shadows after a commit through <paramref name="sweep"/>: an object with a physics BSP is
-    /// re-shadowed where it stands (<see cref="CalcCrossCells"/>), any other in the cells of the last transition.
+    /// Updates the object's shadows after committing <paramref name="transit"/> of <paramref name="sweep"/>'s pool: an object
+    /// with a physics BSP is re-shadowed where it stands (<see cref="CalcCrossCells"/>), any other in the transition's cells.
     /// </summary>
     /// <remarks>An object with a physics BSP is shadowed in its own cell and the cells of its sorting sphere (retail: its
     /// parts' bounding boxes).</remarks>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503), the shadow update at its end
-    internal void UpdateCellShadows(RetailSweep sweep)
+    internal void UpdateCellShadows(RetailSweep sweep, Transition transit)
     {
         if ((State & PhysicsState.HasPhysicsBsp) != 0)
         {
             CalcCrossCells(sweep);
         }
-        else if (sweep.LastTransition is not null && sweep.LastTransition.CellArray.NumCells != 0)
+        else if (transit.CellArray.NumCells != 0)
         {
             RemoveShadowsFromCells();
-            AddShadowsToCells(sweep.LastTransition.CellArray, sweep.Cells.GetVisible(CellId));
+            AddShadowsToCells(transit.CellArray, sweep.Cells.GetVisible(CellId));
         }
     }
 

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
@@ -121,11 +122,42 @@ public sealed partial class PhysicsObj
                     ref TransitionResult scratch = ref World.EnterStepScratch();
                     try
                     {
-                        if (sweep.SweepObject(this, _position, newPos, false, ref scratch))
+                        // retail: transit = transition(...); SetPositionInternal(transit). The retail sweep hands its
+                        // transition to the commit itself; any other sweep hands over its result.
+                        RetailSweep? retail = sweep as RetailSweep;
+                        Transition? transit = null;
+                        bool swept;
+                        if (retail is not null)
                         {
-                            Vector3 offset = _position.GetOffset(scratch.CurrentPosition);
-                            CachedVelocity = DivideByQuantum(offset, quantum);
-                            CommitTransitionInternal(scratch);
+                            transit = SweepHoldingTransition(retail, _position, newPos, false);
+                            swept = transit is not null;
+                            if (swept)
+                            {
+                                RetailSweep.Fill(transit!, ref scratch);
+                            }
+                        }
+                        else
+                        {
+                            swept = sweep.SweepObject(this, _position, newPos, false, ref scratch);
+                        }
+
+                        if (swept)
+                        {
+                            // non-retail: the transition keeps its pool slot until the commit is done (retail gives it back
+                            // first), so a sweep or placement started from a collision report takes another slot
+                            try
+                            {
+                                Vector3 offset = _position.GetOffset(scratch.CurrentPosition);
+                                CachedVelocity = DivideByQuantum(offset, quantum);
+                                CommitTransitionInternal(scratch, retail, transit);
+                            }
+                            finally
+                            {
+                                if (transit is not null)
+                                {
+                                    retail!.Pool.Cleanup();
+                                }
+                            }
                         }
                         else
                         {

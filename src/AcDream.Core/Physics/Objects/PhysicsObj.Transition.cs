@@ -14,8 +14,8 @@ public sealed partial class PhysicsObj
 {
     /// <summary>
     /// Sweeps the object from <paramref name="oldPos"/> to <paramref name="newPos"/> in a transition from
-    /// <paramref name="sweep"/>'s pool. Returns the transition (already given back to the pool, readable until the next
-    /// sweep) or null when the sweep failed or all ten transitions were in use.
+    /// <paramref name="sweep"/>'s pool. Returns the transition (already given back to the pool, readable until the pool's next
+    /// <see cref="TransitionPool.Make"/>) or null when the sweep failed or all ten transitions were in use.
     /// </summary>
     /// <exception cref="ArgumentException">A position is outside the position domain (origin not finite, beyond ±65,536 m, or
     /// outdoor x, y outside [−192, 384]; rotation not a unit quaternion); nothing is changed. The engine's own steps always
@@ -24,6 +24,23 @@ public sealed partial class PhysicsObj
     /// 0xFFFFFFFF, a landblock outside the world) makes the sweep fail (null).</exception>
     // retail: CPhysicsObj::transition (acclient.c:320060)
     internal Transition? RunTransition(RetailSweep sweep, in Position oldPos, in Position newPos, bool adminMove)
+    {
+        Transition? t = SweepHoldingTransition(sweep, oldPos, newPos, adminMove);
+        if (t is not null)
+        {
+            sweep.Pool.Cleanup();
+        }
+
+        return t;
+    }
+
+    /// <summary>
+    /// <see cref="RunTransition"/> that keeps the pool slot of a successful sweep: the caller commits the transition and then
+    /// gives it back (<see cref="TransitionPool.Cleanup"/>). A failed sweep gives its slot back here (null).
+    /// </summary>
+    /// <exception cref="ArgumentException">As <see cref="RunTransition"/>.</exception>
+    // retail: CPhysicsObj::transition (acclient.c:320060), without its cleanupTransition on success
+    internal Transition? SweepHoldingTransition(RetailSweep sweep, in Position oldPos, in Position newPos, bool adminMove)
     {
         // non-retail: the position domain (a sweep towards 1e30 m took seconds and ended in an unloaded block's cell; an
         // invalid rotation never ended)
@@ -53,7 +70,7 @@ public sealed partial class PhysicsObj
             return null;
         }
 
-        bool ok;
+        bool ok = false;
         try
         {
             ObjectInfoState state = GetObjectInfo(t, adminMove);
@@ -78,7 +95,10 @@ public sealed partial class PhysicsObj
         }
         finally
         {
-            sweep.Pool.Cleanup();
+            if (!ok)
+            {
+                sweep.Pool.Cleanup();
+            }
         }
 
         return ok ? t : null;
@@ -118,7 +138,6 @@ public sealed partial class PhysicsObj
 
             if (!CheckPositionInternal(cell, ref p, t, flags))
             {
-                sweep.LastTransition = t;
                 return HandleAllCollisions(sweep, t.CollisionInfo, false, false) ? SetPositionError.Collided : SetPositionError.NoValidPosition;
             }
 
@@ -129,8 +148,7 @@ public sealed partial class PhysicsObj
 
             var result = default(TransitionResult);
             RetailSweep.Fill(t, ref result);
-            sweep.LastTransition = t;
-            CommitTransitionInternal(result);
+            CommitTransitionInternal(result, sweep, t);
             return SetPositionError.Ok;
         }
         finally

@@ -35,8 +35,6 @@ internal static class MutatorCatalog
         ["SimplePartArray.SetFrame(Frame)"] = "engine seam: the object hands its own frame",
         // Sweep entry points are the engine's seam to the collision module (CollisionSweep); SweepObject and SetPosition are
         // called (a client sweep may forward to them), the steps below only with the object's own state.
-        ["RetailSweep.HandleAllCollisions(PhysicsObj, Boolean, Boolean)"] = "engine seam (CollisionSweep)",
-        ["RetailSweep.UpdateCellShadows(PhysicsObj)"] = "engine seam (CollisionSweep)",
         ["RetailSweep.CalcCrossCells(PhysicsObj)"] = "engine seam (CollisionSweep)",
         ["RetailSweep.EtherealCheckForCollisions(PhysicsObj)"] = "engine seam (CollisionSweep)",
         ["RetailSweep.ReportCollisionEnd(PhysicsObj, Boolean)"] = "engine seam (CollisionSweep)",

@@ -55,22 +55,6 @@ public abstract class CollisionSweep
     /// </summary>
     public abstract SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags);
 
-    /// <summary>
-    /// Reports the collisions of the last committed sweep (retail <c>CPhysicsObj::handle_all_collisions</c>, acclient.c:321807),
-    /// called by <see cref="PhysicsObj.CommitTransition"/> after the contact state is updated.
-    /// </summary>
-    public virtual void HandleAllCollisions(PhysicsObj obj, bool prevContact, bool prevOnWalkable)
-    {
-    }
-
-    /// <summary>
-    /// Updates the object's shadows in the cells it overlaps after a commit (retail <c>calc_cross_cells</c> /
-    /// <c>add_shadows_to_cells</c>, end of acclient.c:322503).
-    /// </summary>
-    public virtual void UpdateCellShadows(PhysicsObj obj)
-    {
-    }
-
     /// <summary>Ends the object's collision reports (retail <c>CPhysicsObj::report_collision_end</c>, acclient.c:321712),
     /// called by <see cref="PhysicsObj.TeleportHook"/>.</summary>
     public virtual void ReportCollisionEnd(PhysicsObj obj, bool forceEnd)

@@ -38,7 +38,7 @@ public sealed class FreeSpaceSweep : CollisionSweep
         }
 
         TransitionResult t = TransitionResult.FreeSpace(p);
-        obj.CommitTransitionInternal(t);
+        obj.CommitTransitionInternal(t, null, null);
         return SetPositionError.Ok;
     }
 }

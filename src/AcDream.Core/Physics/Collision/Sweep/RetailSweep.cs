@@ -126,9 +126,6 @@ public sealed class RetailSweep : CollisionSweep
     /// table is kept either way.</summary>
     public IObjectCollisionListener? ObjectCollisionListener { get; set; }
 
-    /// <summary>The transition of the last successful sweep or placement; readable until the next sweep.</summary>
-    internal Transition? LastTransition { get; set; }
-
     /// <summary>Sweeps <paramref name="obj"/> in a pooled transition (see <see cref="PhysicsObj.RunTransition"/>).</summary>
     /// <exception cref="ArgumentException">A position is outside the position domain (<see cref="InputLimits"/>; nothing is
     /// changed).</exception>
@@ -154,7 +151,6 @@ public sealed class RetailSweep : CollisionSweep
         }
 
         Fill(t, ref result);
-        LastTransition = t;
         return true;
     }
 
@@ -169,33 +165,6 @@ public sealed class RetailSweep : CollisionSweep
         // non-retail: the position domain, checked before the object can be sent to the lost cell
         InputLimits.ThrowIfOutside(pos, nameof(pos));
         return obj.SetPositionInternal(this, pos, flags);
-    }
-
-    /// <inheritdoc />
-    public override void HandleAllCollisions(PhysicsObj obj, bool prevContact, bool prevOnWalkable)
-    {
-        ArgumentNullException.ThrowIfNull(obj);
-        if (LastTransition is not null)
-        {
-            obj.HandleAllCollisions(this, LastTransition.CollisionInfo, prevContact, prevOnWalkable);
-        }
-    }
-
-    /// <summary>The collision response of a committed sweep (see <see cref="PhysicsObj.HandleAllCollisions"/>).</summary>
-    /// <returns>True when a collision was reported.</returns>
-    internal bool HandleAllCollisions(PhysicsObj obj, CollisionInfo collisions, bool prevContact, bool prevOnWalkable)
-    {
-        ArgumentNullException.ThrowIfNull(obj);
-        return obj.HandleAllCollisions(this, collisions, prevContact, prevOnWalkable);
-    }
-
-    /// <inheritdoc />
-    /// <remarks>An object with a physics BSP is shadowed in its own cell and the cells of its sorting sphere (retail: its
-    /// parts' bounding boxes).</remarks>
-    public override void UpdateCellShadows(PhysicsObj obj)
-    {
-        ArgumentNullException.ThrowIfNull(obj);
-        obj.UpdateCellShadows(this);
     }
 
     /// <summary>
