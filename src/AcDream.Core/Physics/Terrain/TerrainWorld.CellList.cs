@@ -15,7 +15,8 @@ public sealed partial class TerrainWorld
     /// </summary>
     /// <remarks>
     /// Outdoor half of retail's <c>find_cell_list</c>: an indoor <paramref name="p"/> contributes just its own id (and no
-    /// current land cell); buildings' portal cells (<c>find_transit_cells</c>) belong to a later part of the port.
+    /// current land cell), and buildings' portal cells (<c>find_transit_cells</c>) are not listed: this lists terrain
+    /// cells only. The sweep's own cell list (retail's whole <c>find_cell_list</c>, with the transit cells) is internal.
     /// Ids of cells whose landblock is not loaded are listed too (retail lists them with a null cell).
     /// </remarks>
     /// <exception cref="ArgumentException">See <see cref="LandCell.AddAllOutsideCells"/>.</exception>

@@ -5,8 +5,9 @@ using AcDream.Core.Physics.World;
 namespace AcDream.Core.Physics.Collision.Sweep;
 
 /// <summary>
-/// The one seam through which the collision sweep plugs into the object tick. A world holds one; the built-in
-/// <see cref="FreeSpaceSweep"/> sweeps through empty space until the collision module provides the retail sweep.
+/// The one seam through which the collision sweep plugs into the object tick. A world holds one: <see cref="RetailSweep"/>,
+/// the retail sweep through a world's cells (the default of a world made with terrain or cells), or
+/// <see cref="FreeSpaceSweep"/>, a world with no geometry (the default of a world made without), or a client's own.
 /// </summary>
 /// <remarks>Every member is called inside the tick and must not allocate.</remarks>
 public abstract class CollisionSweep

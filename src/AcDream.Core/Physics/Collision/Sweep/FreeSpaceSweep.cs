@@ -9,7 +9,9 @@ namespace AcDream.Core.Physics.Collision.Sweep;
 /// (adjusted to the outdoor cell under the origin, as <c>store_position</c> does), or sends the object to the lost cell when
 /// the cell id is not a valid world cell.
 /// </summary>
-/// <remarks>Not retail: retail always sweeps against cells. This stands in until the collision module provides the sweep.</remarks>
+/// <remarks>Not retail: retail always sweeps against cells. The sweep of a world made without terrain or cells, and of
+/// every step in a scene without <see cref="World.SceneEffects.Collision"/>; a world with cells sweeps with
+/// <see cref="RetailSweep"/>.</remarks>
 public sealed class FreeSpaceSweep : CollisionSweep
 {
     /// <summary>The shared stateless instance.</summary>
