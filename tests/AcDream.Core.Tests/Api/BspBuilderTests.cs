@@ -91,7 +91,7 @@ public class BspBuilderTests
         Assert.Throws<ArgumentException>(() => BspBuilder.FromTriangles(new Vector3[4]));
         Assert.Throws<ArgumentException>(() => BspBuilder.FromTriangles(new[] { Vector3.Zero, new Vector3(float.NaN, 0f, 0f), Vector3.UnitY }));
         Assert.Throws<ArgumentException>(() => BspBuilder.BuildCell(ReadOnlySpan<CollisionPlane>.Empty));
-        Assert.Throws<ArgumentException>(() => new BspTree(new[] { BspNode.Split(BspNodeType.BPIN, default, default, 0, -1) }, Array.Empty<Polygon>(), Array.Empty<int>()));
+        Assert.Throws<ArgumentException>(() => new BspTree(new[] { BspNode.Split(BspNodeType.SplitBothChildren, default, default, 0, -1) }, Array.Empty<Polygon>(), Array.Empty<int>()));
         Assert.Throws<ArgumentException>(() => new BspTree(new[] { BspNode.MakeLeaf(0, default, 0, 2, false) }, Array.Empty<Polygon>(), new[] { 0, 0 }));
     }
 }

@@ -29,12 +29,12 @@ public class BspConstantsTests
     [Theory]
     // The tags BSPNODE::UnPack compares (acclient.c:363185): 1112557902, +32, +9440, 1112567406, 1114655054, 1114664526;
     // 'LEAF' 1279607110 and 'PORT' 1347375700 (BSPNODE::pack_child_size, acclient.c:363290).
-    [InlineData(BspNodeType.BPIN, 1112557902u, "BPIN")]
-    [InlineData(BspNodeType.BPIn, 1112557934u, "BPIn")]
-    [InlineData(BspNodeType.BPnN, 1112567374u, "BPnN")]
-    [InlineData(BspNodeType.BPnn, 1112567406u, "BPnn")]
-    [InlineData(BspNodeType.BpIN, 1114655054u, "BpIN")]
-    [InlineData(BspNodeType.BpnN, 1114664526u, "BpnN")]
+    [InlineData(BspNodeType.SplitBothChildren, 1112557902u, "BPIN")]
+    [InlineData(BspNodeType.SplitPositiveChild, 1112557934u, "BPIn")]
+    [InlineData(BspNodeType.SplitBothChildrenUnmarked, 1112567374u, "BPnN")]
+    [InlineData(BspNodeType.SplitPositiveChildUnmarked, 1112567406u, "BPnn")]
+    [InlineData(BspNodeType.SplitNegativeChild, 1114655054u, "BpIN")]
+    [InlineData(BspNodeType.SplitNegativeChildUnmarked, 1114664526u, "BpnN")]
     [InlineData(BspNodeType.Leaf, 1279607110u, "LEAF")]
     [InlineData(BspNodeType.Portal, 1347375700u, "PORT")]
     public void NodeTypeTags_AreRetailsFourCharacterCodes(BspNodeType type, uint value, string tag)

@@ -218,7 +218,7 @@ public class BspQueryTests
         var bound = new Sphere(new Vector3(0.5f, 0.5f, 0f), 0.71f);
         var nodes = new[]
         {
-            BspNode.Split(BspNodeType.BPIN, sq.Plane, new Sphere(new Vector3(0.5f, 0.5f, 0f), 50f), 1, 2),
+            BspNode.Split(BspNodeType.SplitBothChildren, sq.Plane, new Sphere(new Vector3(0.5f, 0.5f, 0f), 50f), 1, 2),
             BspNode.MakeLeaf(0, bound, 0, 1, false),
             BspNode.MakeLeaf(1, new Sphere(new Vector3(0.5f, 0.5f, 0f), 50f), 1, 1, true),
         };

@@ -109,7 +109,7 @@ public static class BspBuilder
                 throw new ArgumentException("Cell planes must be finite.", nameof(inwardPlanes));
             }
 
-            nodes[i] = BspNode.Split(BspNodeType.BPIn, p, default, i + 1 < nodes.Length ? i + 1 : -1, -1);
+            nodes[i] = BspNode.Split(BspNodeType.SplitPositiveChild, p, default, i + 1 < nodes.Length ? i + 1 : -1, -1);
         }
 
         return new BspTree(nodes, [], [], 0);
@@ -141,7 +141,7 @@ public static class BspBuilder
                 Nodes.Add(default);
                 int p = BuildNode(pos!, depth + 1);
                 int n = BuildNode(neg!, depth + 1);
-                Nodes[self] = BspNode.Split(BspNodeType.BPIN, plane, bound, p, n);
+                Nodes[self] = BspNode.Split(BspNodeType.SplitBothChildren, plane, bound, p, n);
                 return self;
             }
 

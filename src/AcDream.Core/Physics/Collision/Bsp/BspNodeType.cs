@@ -2,28 +2,36 @@ namespace AcDream.Core.Physics.Collision.Bsp;
 
 /// <summary>
 /// The kind of a BSP node, as retail stores it: a four-character tag read as a big-endian integer
-/// (<c>BSPNODE::type</c>, acclient.h:32157; tags decoded from <c>BSPNODE::UnPack</c>, acclient.c:363185). For the split
-/// nodes, 'P'/'p' says whether a positive child is stored and 'N'/'n' (last letter) whether a negative child is stored.
+/// (<c>BSPNODE::type</c>, acclient.h:32157; tags decoded from <c>BSPNODE::UnPack</c>, acclient.c:363185).
 /// </summary>
+/// <remarks>
+/// A split node's tag is 'B' and three letters, capital or lower case: 'P' / 'p' (second letter) says whether a positive child
+/// is stored, 'N' / 'n' (last letter) whether a negative child is stored; these two are all <c>BSPNODE::UnPack</c> reads
+/// (<c>BPIN</c>, <c>BPnN</c>: both children; <c>BPIn</c>, <c>BPnn</c>: the positive one; <c>BpIN</c>, <c>BpnN</c>: the
+/// negative one). The third letter is 'I' (here: marked) or 'n' (unmarked), and the client never reads it: a node's bounding
+/// sphere and in-plane polygons (<c>in_polys</c>) are stored or not by the tree's pack type, whatever the tag, and no query
+/// tests a split node's tag. A marked node and its unmarked twin therefore behave the same; both are kept so that data
+/// keeps its tag.
+/// </remarks>
 public enum BspNodeType : uint
 {
-    /// <summary>Split node with both children. Retail: 'BPIN' (0x4250494E).</summary>
-    BPIN = 0x4250494E,
+    /// <summary>Split node with both children, marked. Retail: 'BPIN' (0x4250494E).</summary>
+    SplitBothChildren = 0x4250494E,
 
-    /// <summary>Split node with a positive child only. Retail: 'BPIn' (0x4250496E).</summary>
-    BPIn = 0x4250496E,
+    /// <summary>Split node with a positive child only, marked. Retail: 'BPIn' (0x4250496E).</summary>
+    SplitPositiveChild = 0x4250496E,
 
-    /// <summary>Split node with a negative child only. Retail: 'BpIN' (0x4270494E).</summary>
-    BpIN = 0x4270494E,
+    /// <summary>Split node with a negative child only, marked. Retail: 'BpIN' (0x4270494E).</summary>
+    SplitNegativeChild = 0x4270494E,
 
-    /// <summary>Split node with both children. Retail: 'BPnN' (0x42506E4E).</summary>
-    BPnN = 0x42506E4E,
+    /// <summary>Split node with both children, unmarked. Retail: 'BPnN' (0x42506E4E).</summary>
+    SplitBothChildrenUnmarked = 0x42506E4E,
 
-    /// <summary>Split node with a positive child only. Retail: 'BPnn' (0x42506E6E).</summary>
-    BPnn = 0x42506E6E,
+    /// <summary>Split node with a positive child only, unmarked. Retail: 'BPnn' (0x42506E6E).</summary>
+    SplitPositiveChildUnmarked = 0x42506E6E,
 
-    /// <summary>Split node with a negative child only. Retail: 'BpnN' (0x42706E4E).</summary>
-    BpnN = 0x42706E4E,
+    /// <summary>Split node with a negative child only, unmarked. Retail: 'BpnN' (0x42706E4E).</summary>
+    SplitNegativeChildUnmarked = 0x42706E4E,
 
     /// <summary>A leaf: a polygon list with a bounding sphere and a solid flag. Retail: 'LEAF' (0x4C454146).</summary>
     Leaf = 0x4C454146,
