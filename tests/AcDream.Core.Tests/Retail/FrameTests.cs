@@ -274,24 +274,24 @@ public class FrameTests
     }
 
     [Fact]
-    public void Subtract2_UndoesCombine()
+    public void SetToRelative_UndoesCombine()
     {
         Frame a = Frame.FromHeading(new Vector3(5f, 6f, 7f), 33f);
         var b = new Frame(new Vector3(1f, 2f, 3f), Quaternion.CreateFromAxisAngle(Vector3.Normalize(new Vector3(1, 2, 3)), 0.7f));
         Frame ab = Frame.Combined(a, b);
         Frame back = Frame.Identity;
-        back.Subtract2(ab, a);
+        back.SetToRelative(ab, a);
         Assert.True(back.IsEqual(b), $"{back} vs {b}");
     }
 
     [Fact]
-    public void Subtract1_UndoesCombineOnTheRight()
+    public void SetToReference_UndoesCombineOnTheRight()
     {
         Frame a = Frame.FromHeading(new Vector3(5f, 6f, 7f), 33f);
         var b = new Frame(new Vector3(1f, 2f, 3f), Quaternion.CreateFromAxisAngle(Vector3.Normalize(new Vector3(1, 2, 3)), 0.7f));
         Frame ab = Frame.Combined(a, b);
         Frame back = Frame.Identity;
-        back.Subtract1(ab, b);
+        back.SetToReference(ab, b);
         Assert.True(back.IsEqual(a), $"{back} vs {a}");
     }
 

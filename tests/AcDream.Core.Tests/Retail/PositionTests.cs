@@ -85,11 +85,11 @@ public class PositionTests
     }
 
     [Fact]
-    public void Subtract2_ExpressesOtherPositionInMyFrame_AcrossBlocks()
+    public void RelativeFrame_ExpressesOtherPositionInMyFrame_AcrossBlocks()
     {
         var me = new Position(0xA9B40039u, Frame.FromHeading(new Vector3(190f, 10f, 0f), 90f));
         var other = new Position(0xAAB40001u, Frame.FromHeading(new Vector3(2f, 10f, 0f), 90f));
-        Frame rel = Position.Subtract2(other, me);
+        Frame rel = Position.RelativeFrame(other, me);
         // Other is 4 m east = straight ahead of an east-facing body, same heading.
         Assert.Equal(0f, rel.Origin.X, 5);
         Assert.Equal(4f, rel.Origin.Y, 5);

@@ -41,13 +41,13 @@ public class FramePropertyTests
     }
 
     [Fact]
-    public void CombineThenSubtract2_GivesBackTheLocalFrame()
+    public void CombineThenSetToRelative_GivesBackTheLocalFrame()
     {
         PropertyAssert.Holds(Cfg, Prop.ForAll(Frames.ToArbitrary(), Frames.ToArbitrary(), (a, b) =>
         {
             Frame ab = Frame.Combined(a, b);
             Frame back = Frame.Identity;
-            back.Subtract2(ab, a);
+            back.SetToRelative(ab, a);
             // Same rotation (q or -q within 1e-4) and origin within 2e-3 m (origins up to ~330 m, float spacing 3e-5).
             double dot = (double)back.Qw * b.Qw + (double)back.Qx * b.Qx + (double)back.Qy * b.Qy + (double)back.Qz * b.Qz;
             return Math.Abs(Math.Abs(dot) - 1.0) < 1e-4 && Vector3.Distance(back.Origin, b.Origin) < 2e-3f;

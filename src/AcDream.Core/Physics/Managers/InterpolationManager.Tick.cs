@@ -93,7 +93,7 @@ public sealed partial class InterpolationManager
         }
 
         // The head in the body's local frame, block-offset aware (Position::subtract2, acclient.c:388972).
-        Frame adjustment = Position.Subtract2(head.Position, body);
+        Frame adjustment = Position.RelativeFrame(head.Position, body);
         float progress = (float)(myMaxSpeed * quantum);
         double adjustmentMagnitude = ManagerMath.Magnitude(adjustment.Origin);
         float adjustmentDistance = (float)adjustmentMagnitude;

@@ -277,42 +277,43 @@ public partial struct Frame : IEquatable<Frame>
     }
 
     /// <summary>
-    /// Sets this frame to the transform that maps <paramref name="f2"/>'s space into <paramref name="f1"/>'s relative
-    /// placement: q = f1.q * conj(f2.q), origin = f1.origin + R(q) * (-f2.origin). The inverse of <see cref="Combine"/>
-    /// on the right: if A = B ∘ C then subtract1(A, C) = B.
+    /// Sets this frame to the reference frame R that <paramref name="local"/> is placed in to give
+    /// <paramref name="combined"/>: <c>R ∘ local = combined</c>, the inverse of <see cref="Combine"/> on the right (if
+    /// A = B ∘ C then SetToReference(A, C) gives B). q = combined.q * conj(local.q), origin = combined.origin + R(q) *
+    /// (-local.origin). Retail <c>Frame::subtract1</c>.
     /// </summary>
     // retail: Frame::subtract1 (acclient.c:357321)
-    public void Subtract1(in Frame f1, in Frame f2)
+    public void SetToReference(in Frame combined, in Frame local)
     {
-        float nz = (float)((double)f1._qz * f2._qw - ((double)f1._qw * f2._qz + (double)f2._qy * f1._qx) + (double)f1._qy * f2._qx);
-        float ny = (float)((double)f1._qy * f2._qw - (double)f1._qw * f2._qy + (double)f2._qz * f1._qx - (double)f2._qx * f1._qz);
-        float nx = (float)((double)f1._qx * f2._qw - (double)f2._qx * f1._qw - (double)f1._qy * f2._qz + (double)f1._qz * f2._qy);
-        float nw = (float)((double)f1._qy * f2._qy + (double)f2._qx * f1._qx + (double)f1._qw * f2._qw + (double)f2._qz * f1._qz);
-        Vector3 f1o = f1.Origin;
-        Vector3 f2o = f2.Origin;
+        float nz = (float)((double)combined._qz * local._qw - ((double)combined._qw * local._qz + (double)local._qy * combined._qx) + (double)combined._qy * local._qx);
+        float ny = (float)((double)combined._qy * local._qw - (double)combined._qw * local._qy + (double)local._qz * combined._qx - (double)local._qx * combined._qz);
+        float nx = (float)((double)combined._qx * local._qw - (double)local._qx * combined._qw - (double)combined._qy * local._qz + (double)combined._qz * local._qy);
+        float nw = (float)((double)combined._qy * local._qy + (double)local._qx * combined._qx + (double)combined._qw * local._qw + (double)local._qz * combined._qz);
+        Vector3 combinedOrigin = combined.Origin;
+        Vector3 localOrigin = local.Origin;
         SetRotate(nw, nx, ny, nz);
-        double vx = -f2o.X;
-        double vy = -f2o.Y;
-        double vz = -f2o.Z;
+        double vx = -localOrigin.X;
+        double vy = -localOrigin.Y;
+        double vz = -localOrigin.Z;
         float gx = (float)(vz * _m6 + vx * _m0 + vy * _m3);
         float gy = (float)(vz * _m7 + vx * _m1 + vy * _m4);
         double gz = vz * _m8 + vx * _m2 + vy * _m5;
-        Origin = new Vector3((float)(gx + (double)f1o.X), (float)(gy + (double)f1o.Y), (float)(gz + f1o.Z));
+        Origin = new Vector3((float)(gx + (double)combinedOrigin.X), (float)(gy + (double)combinedOrigin.Y), (float)(gz + combinedOrigin.Z));
     }
 
     /// <summary>
-    /// Sets this frame to <paramref name="f1"/> expressed in <paramref name="f2"/>'s local space:
-    /// origin = f2.globaltolocal(f1.origin), q = conj(f2.q) * f1.q. The inverse of <see cref="Combine"/> on the left:
-    /// if A = B ∘ C then subtract2(A, B) = C.
+    /// Sets this frame to <paramref name="frame"/> expressed in <paramref name="reference"/>'s local space:
+    /// origin = reference.globaltolocal(frame.origin), q = conj(reference.q) * frame.q. The inverse of <see cref="Combine"/>
+    /// on the left: if A = B ∘ C then SetToRelative(A, B) gives C. Retail <c>Frame::subtract2</c>.
     /// </summary>
     // retail: Frame::subtract2 (acclient.c:357364)
-    public void Subtract2(in Frame f1, in Frame f2)
+    public void SetToRelative(in Frame frame, in Frame reference)
     {
-        Vector3 local = f2.GlobalToLocal(f1.Origin);
-        float nz = (float)((double)f1._qz * f2._qw - (double)f1._qy * f2._qx + (double)f1._qx * f2._qy - (double)f1._qw * f2._qz);
-        float ny = (float)((double)f1._qz * f2._qx + (double)f2._qw * f1._qy - (double)f2._qy * f1._qw - (double)f1._qx * f2._qz);
-        float nx = (float)((double)f1._qx * f2._qw - (double)f1._qw * f2._qx - (double)f2._qy * f1._qz + (double)f1._qy * f2._qz);
-        float nw = (float)((double)f1._qw * f2._qw + (double)f2._qy * f1._qy + (double)f1._qx * f2._qx + (double)f1._qz * f2._qz);
+        Vector3 local = reference.GlobalToLocal(frame.Origin);
+        float nz = (float)((double)frame._qz * reference._qw - (double)frame._qy * reference._qx + (double)frame._qx * reference._qy - (double)frame._qw * reference._qz);
+        float ny = (float)((double)frame._qz * reference._qx + (double)reference._qw * frame._qy - (double)reference._qy * frame._qw - (double)frame._qx * reference._qz);
+        float nx = (float)((double)frame._qx * reference._qw - (double)frame._qw * reference._qx - (double)reference._qy * frame._qz + (double)frame._qy * reference._qz);
+        float nw = (float)((double)frame._qw * reference._qw + (double)reference._qy * frame._qy + (double)frame._qx * reference._qx + (double)frame._qz * reference._qz);
         Origin = local;
         SetRotate(nw, nx, ny, nz);
     }

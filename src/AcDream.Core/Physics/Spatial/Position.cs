@@ -130,15 +130,17 @@ public struct Position : IEquatable<Position>
     public readonly Vector3 GlobalToLocalVec(Vector3 v) => Frame.GlobalToLocalVec(v);
 
     /// <summary>
-    /// Sets this position's frame to <paramref name="p1"/> expressed in <paramref name="p2"/>'s local frame, across landblocks:
-    /// p1's origin is first moved into p2's landblock (Frame::subtract2 on block-corrected frames).
+    /// Returns <paramref name="position"/>'s frame expressed in <paramref name="reference"/>'s local frame, across landblocks:
+    /// <paramref name="position"/>'s origin is first moved into <paramref name="reference"/>'s landblock, then
+    /// <see cref="Frame.SetToRelative"/>. Retail <c>Position::subtract2</c>.
     /// </summary>
-    public static Frame Subtract2(in Position p1, in Position p2)
+    // retail: Position::subtract2 (acclient.c:388972)
+    public static Frame RelativeFrame(in Position position, in Position reference)
     {
-        Frame f1 = p1.Frame;
-        f1.Origin = p2.LocalToGlobal(p1);
+        Frame f = position.Frame;
+        f.Origin = reference.LocalToGlobal(position);
         Frame r = Frame.Identity;
-        r.Subtract2(f1, p2.Frame);
+        r.SetToRelative(f, reference.Frame);
         return r;
     }
 
