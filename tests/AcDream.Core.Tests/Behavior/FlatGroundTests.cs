@@ -59,7 +59,7 @@ public class FlatGroundTests
         PhysicsObj obj = SweepScene.Walker(world, new Position(cell, new Vector3(100f, 96f, 20f)));
         // Walk at 3.12 m/s (retail's walk speed) turning at 0.5 rad/s: a circle of radius 3.12 / 0.5 = 6.24 m, so the
         // walker stays inside the landblock. The rotation is about z only, so the root motion never has a z component
-        // (M2 = M5 = 0 exactly) and the contact plane (N = +z) leaves the step unchanged: the height must stay exactly 20.
+        // (M13 = M23 = 0 exactly) and the contact plane (N = +z) leaves the step unchanged: the height must stay exactly 20.
         SweepScene.SetWalk(obj, new Vector3(0f, 3.12f, 0f));
         ((SimplePartArray)obj.PartArray!).SequenceOmega = new Vector3(0f, 0f, 0.5f);
         float minX = float.MaxValue, maxX = float.MinValue;

@@ -15,22 +15,22 @@ public class FrameTests
     {
         Frame f = Frame.Identity;
         Assert.Equal(1f, f.Qw);
-        Assert.Equal((1f, 0f, 0f), (f.M0, f.M1, f.M2));
-        Assert.Equal((0f, 1f, 0f), (f.M3, f.M4, f.M5));
-        Assert.Equal((0f, 0f, 1f), (f.M6, f.M7, f.M8));
+        Assert.Equal((1f, 0f, 0f), (f.M11, f.M12, f.M13));
+        Assert.Equal((0f, 1f, 0f), (f.M21, f.M22, f.M23));
+        Assert.Equal((0f, 0f, 1f), (f.M31, f.M32, f.M33));
     }
 
     [Fact]
     public void Cache_QuarterTurnAboutZ_MapsLocalYToWest()
     {
         // q = (cos 45, 0, 0, sin 45): +90 degrees about +Z (anticlockwise seen from above).
-        // M3 = 2xy - 2wz = -2 * 0.5 = -1, M4 = 1 - 2x² - 2z² = 0: local +Y -> global -X (west).
+        // M21 = 2xy - 2wz = -2 * 0.5 = -1, M22 = 1 - 2x² - 2z² = 0: local +Y -> global -X (west).
         Frame f = Frame.Identity;
         Assert.True(f.SetRotate(Half2, 0f, 0f, Half2));
-        Assert.Equal(-1f, f.M3, 6);
-        Assert.Equal(0f, f.M4, 6);
-        Assert.Equal(1f, f.M1, 6);  // local +X -> global +Y
-        Assert.Equal(1f, f.M8, 6);
+        Assert.Equal(-1f, f.M21, 6);
+        Assert.Equal(0f, f.M22, 6);
+        Assert.Equal(1f, f.M12, 6);  // local +X -> global +Y
+        Assert.Equal(1f, f.M33, 6);
     }
 
     [Fact]
@@ -209,22 +209,22 @@ public class FrameTests
         // (acclient.c:143733, "v8 = v6 * m_fl2gv[8] + ..."), while the x and y rows use its float spill v7.
         // A tilted frame (quaternion 0.9, 0.3, 0.2, 0.1 normalised) at (10, 20, 100.5), the point (11, 19, 0.3f):
         //   dx = 1, dy = -1; dz = 0.3f - 100.5 = -100.19999998807907 in double (as float: -100.19999694824219).
-        //   The cached column Z is M6 = 0.44210529, M7 = -0.52631581, M8 = 0.72631574 (the floats Cache stores).
-        //   z = dz*M8 + dx*M6 + dy*M7 = -72.77683681575876 + 0.44210529 + 0.52631581 = -71.80841571418863
+        //   The cached column Z is M31 = 0.44210529, M32 = -0.52631581, M33 = 0.72631574 (the floats Cache stores).
+        //   z = dz*M33 + dx*M31 + dy*M32 = -72.77683681575876 + 0.44210529 + 0.52631581 = -71.80841571418863
         //     -> 0xC28F9DE9 (-71.80841827); with the float dz: -71.80841350630726 -> 0xC28F9DE8 (-71.80841064).
         //   The midpoint of the two floats is -71.80841445922852.
         var f = new Frame(new Vector3(10f, 20f, 100.5f), new Quaternion(0.3f, 0.2f, 0.1f, 0.9f));
         var p = new Vector3(11f, 19f, 0.3f);
         Vector3 local = f.GlobalToLocal(p);
         double dz = (double)p.Z - f.Origin.Z;
-        double expected = dz * f.M8 + 1.0 * f.M6 + -1.0 * f.M7;
+        double expected = dz * f.M33 + 1.0 * f.M31 + -1.0 * f.M32;
         Assert.Equal(-71.80841571418863, expected, 12);
         Assert.Equal(unchecked((int)0xC28F9DE9), BitConverter.SingleToInt32Bits(local.Z));
 
         // The x and y rows use the float dz (-100.19999694824219) exactly as before.
         float dzF = p.Z - f.Origin.Z;
-        Assert.Equal((float)((double)dzF * f.M2 + 1.0 * f.M0 + -1.0 * f.M1), local.X);
-        Assert.Equal((float)((double)dzF * f.M5 + 1.0 * f.M3 + -1.0 * f.M4), local.Y);
+        Assert.Equal((float)((double)dzF * f.M13 + 1.0 * f.M11 + -1.0 * f.M12), local.X);
+        Assert.Equal((float)((double)dzF * f.M23 + 1.0 * f.M21 + -1.0 * f.M22), local.Y);
     }
 
     [Fact]
@@ -364,9 +364,9 @@ public class FrameTests
 
     internal static void AssertOrthonormal(in Frame f, double tol)
     {
-        var x = new Vector3(f.M0, f.M1, f.M2);
-        var y = new Vector3(f.M3, f.M4, f.M5);
-        var z = new Vector3(f.M6, f.M7, f.M8);
+        var x = new Vector3(f.M11, f.M12, f.M13);
+        var y = new Vector3(f.M21, f.M22, f.M23);
+        var z = new Vector3(f.M31, f.M32, f.M33);
         Assert.True(Math.Abs(Vector3.Dot(x, x) - 1) < tol);
         Assert.True(Math.Abs(Vector3.Dot(y, y) - 1) < tol);
         Assert.True(Math.Abs(Vector3.Dot(z, z) - 1) < tol);
@@ -379,10 +379,10 @@ public class FrameTests
     {
         // The standard rotation matrix of (w, x, y, z), written column by column as in Frame's doc.
         double w = f.Qw, x = f.Qx, y = f.Qy, z = f.Qz;
-        Assert.True(Math.Abs(f.M0 - (1 - 2 * y * y - 2 * z * z)) < tol);
-        Assert.True(Math.Abs(f.M1 - (2 * x * y + 2 * w * z)) < tol);
-        Assert.True(Math.Abs(f.M3 - (2 * x * y - 2 * w * z)) < tol);
-        Assert.True(Math.Abs(f.M5 - (2 * y * z + 2 * w * x)) < tol);
-        Assert.True(Math.Abs(f.M8 - (1 - 2 * x * x - 2 * y * y)) < tol);
+        Assert.True(Math.Abs(f.M11 - (1 - 2 * y * y - 2 * z * z)) < tol);
+        Assert.True(Math.Abs(f.M12 - (2 * x * y + 2 * w * z)) < tol);
+        Assert.True(Math.Abs(f.M21 - (2 * x * y - 2 * w * z)) < tol);
+        Assert.True(Math.Abs(f.M23 - (2 * y * z + 2 * w * x)) < tol);
+        Assert.True(Math.Abs(f.M33 - (1 - 2 * x * x - 2 * y * y)) < tol);
     }
 }

@@ -11,7 +11,7 @@ public class DegenerateInputsNeverGiveNaNTests
     private static void AssertNoNaN(in Frame f)
     {
         Assert.False(float.IsNaN(f.Qw) || float.IsNaN(f.Qx) || float.IsNaN(f.Qy) || float.IsNaN(f.Qz));
-        Assert.False(float.IsNaN(f.M0) || float.IsNaN(f.M4) || float.IsNaN(f.M8));
+        Assert.False(float.IsNaN(f.M11) || float.IsNaN(f.M22) || float.IsNaN(f.M33));
         Assert.True(f.IsValid());
     }
 

@@ -12,22 +12,22 @@ namespace AcDream.Core.Tests.Support;
 internal struct ReferenceFrame
 {
     public float Qw, Qx, Qy, Qz;
-    public float M0, M1, M2, M3, M4, M5, M6, M7, M8;
+    public float M11, M12, M13, M21, M22, M23, M31, M32, M33;
     public Vector3 Origin;
 
     /// <summary>Copies every field of <paramref name="f"/>.</summary>
     public static ReferenceFrame From(in Frame f) => new()
     {
         Qw = f.Qw, Qx = f.Qx, Qy = f.Qy, Qz = f.Qz,
-        M0 = f.M0, M1 = f.M1, M2 = f.M2, M3 = f.M3, M4 = f.M4, M5 = f.M5, M6 = f.M6, M7 = f.M7, M8 = f.M8,
+        M11 = f.M11, M12 = f.M12, M13 = f.M13, M21 = f.M21, M22 = f.M22, M23 = f.M23, M31 = f.M31, M32 = f.M32, M33 = f.M33,
         Origin = f.Origin,
     };
 
     /// <summary>True when every field has the same bits as <paramref name="f"/>'s.</summary>
     public readonly bool SameBits(in Frame f) =>
         B(Qw) == B(f.Qw) && B(Qx) == B(f.Qx) && B(Qy) == B(f.Qy) && B(Qz) == B(f.Qz)
-        && B(M0) == B(f.M0) && B(M1) == B(f.M1) && B(M2) == B(f.M2) && B(M3) == B(f.M3) && B(M4) == B(f.M4)
-        && B(M5) == B(f.M5) && B(M6) == B(f.M6) && B(M7) == B(f.M7) && B(M8) == B(f.M8)
+        && B(M11) == B(f.M11) && B(M12) == B(f.M12) && B(M13) == B(f.M13) && B(M21) == B(f.M21) && B(M22) == B(f.M22)
+        && B(M23) == B(f.M23) && B(M31) == B(f.M31) && B(M32) == B(f.M32) && B(M33) == B(f.M33)
         && B(Origin.X) == B(f.Origin.X) && B(Origin.Y) == B(f.Origin.Y) && B(Origin.Z) == B(f.Origin.Z);
 
     private static int B(float x) => System.BitConverter.SingleToInt32Bits(x);
@@ -46,16 +46,16 @@ internal struct ReferenceFrame
             double yc = Qy * c2;
             double yd = Qy * d2;
             double zd = Qz * d2;
-            M0 = (float)(1.0 - yc - zd);
-            M1 = (float)(xc + wd);
-            M2 = (float)(xd - wc);
-            M3 = (float)(xc - wd);
+            M11 = (float)(1.0 - yc - zd);
+            M12 = (float)(xc + wd);
+            M13 = (float)(xd - wc);
+            M21 = (float)(xc - wd);
             double oneMinusXb = 1.0 - xb;
-            M4 = (float)(oneMinusXb - zd);
-            M5 = (float)(yd + wb);
-            M6 = (float)(xd + wc);
-            M7 = (float)(yd - wb);
-            M8 = (float)(oneMinusXb - yc);
+            M22 = (float)(oneMinusXb - zd);
+            M23 = (float)(yd + wb);
+            M31 = (float)(xd + wc);
+            M32 = (float)(yd - wb);
+            M33 = (float)(oneMinusXb - yc);
         }
 
     public readonly bool IsValid()
@@ -101,9 +101,9 @@ internal struct ReferenceFrame
 
     private static void CombineProduct(in ReferenceFrame f1, in ReferenceFrame f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz)
         {
-            double ox = (double)f1.M6 * f2.Origin.Z + (double)f1.M0 * f2.Origin.X + (double)f1.M3 * f2.Origin.Y + f1.Origin.X;
-            double oy = (double)f1.M7 * f2.Origin.Z + (double)f1.M1 * f2.Origin.X + (double)f1.M4 * f2.Origin.Y + f1.Origin.Y;
-            double oz = (double)f1.M8 * f2.Origin.Z + (double)f1.M2 * f2.Origin.X + (double)f1.M5 * f2.Origin.Y + f1.Origin.Z;
+            double ox = (double)f1.M31 * f2.Origin.Z + (double)f1.M11 * f2.Origin.X + (double)f1.M21 * f2.Origin.Y + f1.Origin.X;
+            double oy = (double)f1.M32 * f2.Origin.Z + (double)f1.M12 * f2.Origin.X + (double)f1.M22 * f2.Origin.Y + f1.Origin.Y;
+            double oz = (double)f1.M33 * f2.Origin.Z + (double)f1.M13 * f2.Origin.X + (double)f1.M23 * f2.Origin.Y + f1.Origin.Z;
             nz = (float)((double)f2.Qy * f1.Qx + (double)f2.Qz * f1.Qw - (double)f1.Qy * f2.Qx + (double)f1.Qz * f2.Qw);
             ny = (float)((double)f2.Qy * f1.Qw - (double)f2.Qz * f1.Qx + (double)f1.Qz * f2.Qx + (double)f1.Qy * f2.Qw);
             nx = (float)((double)f1.Qw * f2.Qx + (double)f2.Qz * f1.Qy + (double)f2.Qw * f1.Qx - (double)f2.Qy * f1.Qz);
@@ -113,9 +113,9 @@ internal struct ReferenceFrame
 
     public void Rotate(Vector3 w)
         {
-            float gx = (float)((double)M6 * w.Z + (double)M0 * w.X + (double)M3 * w.Y);
-            float gy = (float)((double)M7 * w.Z + (double)M1 * w.X + (double)M4 * w.Y);
-            float gz = (float)((double)M8 * w.Z + (double)M2 * w.X + (double)M5 * w.Y);
+            float gx = (float)((double)M31 * w.Z + (double)M11 * w.X + (double)M21 * w.Y);
+            float gy = (float)((double)M32 * w.Z + (double)M12 * w.X + (double)M22 * w.Y);
+            float gz = (float)((double)M33 * w.Z + (double)M13 * w.X + (double)M23 * w.Y);
             GRotate(new Vector3(gx, gy, gz));
         }
 
@@ -153,7 +153,7 @@ internal struct ReferenceFrame
 
     public void SetHeading(float degrees)
         {
-            float dz = (float)(((double)M8 + M2) * 0.0 + M5);
+            float dz = (float)(((double)M33 + M13) * 0.0 + M23);
             double rad = degrees * HeadingMath.DegToRad;
             var direction = new Vector3((float)Math.Sin(rad), (float)Math.Cos(rad), dz);
             SetVectorHeading(direction);

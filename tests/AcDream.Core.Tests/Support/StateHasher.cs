@@ -49,15 +49,15 @@ internal struct StateHasher
         Add(f.Qx);
         Add(f.Qy);
         Add(f.Qz);
-        Add(f.M0);
-        Add(f.M1);
-        Add(f.M2);
-        Add(f.M3);
-        Add(f.M4);
-        Add(f.M5);
-        Add(f.M6);
-        Add(f.M7);
-        Add(f.M8);
+        Add(f.M11);
+        Add(f.M12);
+        Add(f.M13);
+        Add(f.M21);
+        Add(f.M22);
+        Add(f.M23);
+        Add(f.M31);
+        Add(f.M32);
+        Add(f.M33);
     }
 
     public void Add(in Position p)

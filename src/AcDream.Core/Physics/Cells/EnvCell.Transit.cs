@@ -36,10 +36,10 @@ public sealed partial class EnvCell
                     double dx = (double)c.X - f.Origin.X;
                     double dy = (double)c.Y - f.Origin.Y;
                     double dz = (double)c.Z - f.Origin.Z;
-                    float lx = (float)(dx * f.M0 + dz * f.M2 + dy * f.M1);
-                    float ly = (float)(dx * f.M3 + dz * f.M5 + dy * f.M4);
+                    float lx = (float)(dx * f.M11 + dz * f.M13 + dy * f.M12);
+                    float ly = (float)(dx * f.M21 + dz * f.M23 + dy * f.M22);
                     float ia = (float)(spheres[s].Radius + (double)PhysicsGlobals.Epsilon);
-                    double d = (dz * f.M8 + dy * f.M7 + dx * f.M6) * pl.N.Z + (double)ly * pl.N.Y + (double)lx * pl.N.X + pl.D;
+                    double d = (dz * f.M33 + dy * f.M32 + dx * f.M31) * pl.N.Z + (double)ly * pl.N.Y + (double)lx * pl.N.X + pl.D;
                     if (d > -ia && d < ia)
                     {
                         checkOutside = true;

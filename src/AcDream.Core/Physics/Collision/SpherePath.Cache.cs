@@ -22,10 +22,10 @@ internal sealed partial class SpherePath
         for (int i = 0; i < NumSphere; i++)
         {
             Vector3 c = LocalSphere[i].Center;
-            float x = (float)((double)c.X * f.M0 + (double)c.Y * f.M3 + (double)c.Z * f.M6 + f.Origin.X);
-            float y = (float)((double)f.M7 * c.Z + (double)c.X * f.M1 + (double)f.M4 * c.Y + f.Origin.Y);
-            double zs = (double)f.M8 * c.Z + (double)f.M5 * c.Y;
-            double z = zs + (double)f.M2 * c.X + f.Origin.Z;
+            float x = (float)((double)c.X * f.M11 + (double)c.Y * f.M21 + (double)c.Z * f.M31 + f.Origin.X);
+            float y = (float)((double)f.M32 * c.Z + (double)c.X * f.M12 + (double)f.M22 * c.Y + f.Origin.Y);
+            double zs = (double)f.M33 * c.Z + (double)f.M23 * c.Y;
+            double z = zs + (double)f.M13 * c.X + f.Origin.Z;
             GlobalCurrCenter[i] = new Vector3(x, y, (float)z);
         }
     }
@@ -38,17 +38,17 @@ internal sealed partial class SpherePath
         for (int i = 0; i < NumSphere; i++)
         {
             Vector3 c = LocalSphere[i].Center;
-            float x = (float)((double)c.X * f.M0 + (double)c.Y * f.M3 + (double)c.Z * f.M6 + f.Origin.X);
-            float y = (float)((double)f.M7 * c.Z + (double)c.X * f.M1 + (double)f.M4 * c.Y + f.Origin.Y);
-            double zs = (double)f.M8 * c.Z + (double)f.M2 * c.X;
-            double z = zs + (double)f.M5 * c.Y + f.Origin.Z;
+            float x = (float)((double)c.X * f.M11 + (double)c.Y * f.M21 + (double)c.Z * f.M31 + f.Origin.X);
+            float y = (float)((double)f.M32 * c.Z + (double)c.X * f.M12 + (double)f.M22 * c.Y + f.Origin.Y);
+            double zs = (double)f.M33 * c.Z + (double)f.M13 * c.X;
+            double z = zs + (double)f.M23 * c.Y + f.Origin.Z;
             GlobalSphere[i] = new Sphere(new Vector3(x, y, (float)z), LocalSphere[i].Radius);
         }
 
         Vector3 l = LocalLowPoint;
-        float lx = (float)((double)f.M6 * l.Z + (double)f.M0 * l.X + (double)f.M3 * l.Y + f.Origin.X);
-        float ly = (float)((double)f.M7 * l.Z + (double)f.M1 * l.X + (double)f.M4 * l.Y + f.Origin.Y);
-        float lz = (float)((double)f.M8 * l.Z + (double)f.M2 * l.X + (double)f.M5 * l.Y + f.Origin.Z);
+        float lx = (float)((double)f.M31 * l.Z + (double)f.M11 * l.X + (double)f.M21 * l.Y + f.Origin.X);
+        float ly = (float)((double)f.M32 * l.Z + (double)f.M12 * l.X + (double)f.M22 * l.Y + f.Origin.Y);
+        float lz = (float)((double)f.M33 * l.Z + (double)f.M13 * l.X + (double)f.M23 * l.Y + f.Origin.Z);
         GlobalLowPoint = new Vector3(lx, ly, lz);
     }
 
@@ -56,8 +56,8 @@ internal sealed partial class SpherePath
     /// <see cref="CacheGlobalSphere()"/> for a check position whose frame is the one <see cref="GlobalCurrCenter"/> was
     /// last computed from (the caller guarantees it): the sphere centres are taken from <see cref="GlobalCurrCenter"/>
     /// when that gives the same bits, else recomputed. Both functions compute x and y with the same expressions; their z
-    /// sums differ only in the order of the terms M2·c.x and M5·c.y, so when both products are zero (a centre on the
-    /// local z axis, or a frame that only turns about z) both give ((M8·c.z + 0) + 0) + origin.z, whatever the signs of
+    /// sums differ only in the order of the terms M13·c.x and M23·c.y, so when both products are zero (a centre on the
+    /// local z axis, or a frame that only turns about z) both give ((M33·c.z + 0) + 0) + origin.z, whatever the signs of
     /// the zeros. The low point is computed as always.
     /// </summary>
     /// <param name="f">A frame with the bits of <see cref="CheckPos"/>'s (CheckPos's own, or the one it was just copied
@@ -70,7 +70,7 @@ internal sealed partial class SpherePath
             for (int i = 0; i < NumSphere; i++)
             {
                 Vector3 c = LocalSphere[i].Center;
-                if ((double)f.M2 * c.X != 0.0 || (double)f.M5 * c.Y != 0.0)
+                if ((double)f.M13 * c.X != 0.0 || (double)f.M23 * c.Y != 0.0)
                 {
                     CacheGlobalSphere();
                     return;
@@ -83,9 +83,9 @@ internal sealed partial class SpherePath
             }
 
             Vector3 l = LocalLowPoint;
-            float lx = (float)((double)f.M6 * l.Z + (double)f.M0 * l.X + (double)f.M3 * l.Y + f.Origin.X);
-            float ly = (float)((double)f.M7 * l.Z + (double)f.M1 * l.X + (double)f.M4 * l.Y + f.Origin.Y);
-            float lz = (float)((double)f.M8 * l.Z + (double)f.M2 * l.X + (double)f.M5 * l.Y + f.Origin.Z);
+            float lx = (float)((double)f.M31 * l.Z + (double)f.M11 * l.X + (double)f.M21 * l.Y + f.Origin.X);
+            float ly = (float)((double)f.M32 * l.Z + (double)f.M12 * l.X + (double)f.M22 * l.Y + f.Origin.Y);
+            float lz = (float)((double)f.M33 * l.Z + (double)f.M13 * l.X + (double)f.M23 * l.Y + f.Origin.Z);
             GlobalLowPoint = new Vector3(lx, ly, lz);
             return;
         }
@@ -125,9 +125,9 @@ internal sealed partial class SpherePath
 
         LocalSpacePos = p;
         ref readonly Frame f = ref p.Frame;
-        float zx = (float)(((double)f.M1 + f.M0) * 0.0 + f.M2);
-        float zy = (float)(((double)f.M4 + f.M3) * 0.0 + f.M5);
-        float zz = (float)(((double)f.M7 + f.M6) * 0.0 + f.M8);
+        float zx = (float)(((double)f.M12 + f.M11) * 0.0 + f.M13);
+        float zy = (float)(((double)f.M22 + f.M21) * 0.0 + f.M23);
+        float zz = (float)(((double)f.M32 + f.M31) * 0.0 + f.M33);
         LocalSpaceZ = new Vector3(zx, zy, zz);
         Sphere s = LocalSpaceSphere[0];
         float ry = s.Radius * zy;

@@ -39,9 +39,9 @@ internal sealed partial class SpherePath
         Walkable = null;
         StepUp = false;
         ref readonly Frame f = ref WalkablePos.Frame;
-        float gx = (float)((double)normal.Z * f.M6 + (double)normal.X * f.M0 + (double)normal.Y * f.M3);
-        float gy = (float)((double)normal.Z * f.M7 + (double)normal.X * f.M1 + (double)normal.Y * f.M4);
-        float gz = (float)((double)normal.Z * f.M8 + (double)normal.X * f.M2 + (double)normal.Y * f.M5);
+        float gx = (float)((double)normal.Z * f.M31 + (double)normal.X * f.M11 + (double)normal.Y * f.M21);
+        float gy = (float)((double)normal.Z * f.M32 + (double)normal.X * f.M12 + (double)normal.Y * f.M22);
+        float gz = (float)((double)normal.Z * f.M33 + (double)normal.X * f.M13 + (double)normal.Y * f.M23);
         var n = new Vector3(gx, gy, gz);
 
         Vector3 blockOffset = LandDefs.GetBlockOffset(CurrPos.ObjCellId, CheckPos.ObjCellId);

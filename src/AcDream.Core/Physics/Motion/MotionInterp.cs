@@ -311,10 +311,10 @@ public sealed partial class MotionInterp : IMotionInterpreter
     {
         Frame f = obj.Position.Frame;
         Vector3 v = obj.Velocity;
-        float x = (float)((double)f.M1 * v.Y + (double)f.M0 * v.X + (double)f.M2 * v.Z);
-        float y = (float)((double)f.M4 * v.Y + (double)f.M3 * v.X + (double)f.M5 * v.Z);
-        double zxy = (double)f.M7 * v.Y + (double)f.M6 * v.X;
-        double zz = (double)f.M8 * v.Z;
+        float x = (float)((double)f.M12 * v.Y + (double)f.M11 * v.X + (double)f.M13 * v.Z);
+        float y = (float)((double)f.M22 * v.Y + (double)f.M21 * v.X + (double)f.M23 * v.Z);
+        double zxy = (double)f.M32 * v.Y + (double)f.M31 * v.X;
+        double zz = (double)f.M33 * v.Z;
         return new Vector3(x, y, (float)(zxy + zz));
     }
 }

@@ -66,14 +66,14 @@ public sealed partial class PhysicsObj
     /// <summary>Reads the object's first fields and its part array's type (the memory a visit starts with), so that a walk
     /// can bring the next objects' memory in while it visits this one; returns a value only so the reads are not dropped.</summary>
     internal int TouchForVisit() =>
-        (int)_state + (int)_position.ObjCellId + (int)_position.Frame.M8 + (int)_scene.Dormancy + (int)_scene.UpdateTime + (int)CellId
+        (int)_state + (int)_position.ObjCellId + (int)_position.Frame.M33 + (int)_scene.Dormancy + (int)_scene.UpdateTime + (int)CellId
         + (int)_velocity.X + (int)_omega.Z + (int)CachedVelocity.X + (int)ContactPlaneNormal.Z + (int)SlidingNormal.X + (int)Scale
         + _updateTimes[0] + NumShadowObjects + (Hooks is null ? 0 : 1) + (_partArray is null ? 0 : 1);
 
     /// <summary>Reads what a visit reads next, once the object itself is in cache: its part array's frame and motion.</summary>
     internal int TouchComponentsForVisit() =>
         _partArray is SimplePartArray p ? (int)p.SequenceVelocity.X + (int)p.SequenceOmega.Z + p.NumSpheres + (int)p.Scale
-            + (int)p.GetPartFrame(0).M8 + (int)p.StepUpHeight : 0;
+            + (int)p.GetPartFrame(0).M33 + (int)p.StepUpHeight : 0;
 
     // The dormant getters: bring the lazily evaluated bookkeeping to the values retail would hold now, then read the field.
     private void MaterializeIfLazy()

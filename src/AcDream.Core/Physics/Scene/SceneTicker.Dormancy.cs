@@ -233,9 +233,9 @@ internal sealed partial class SceneTicker
     private static bool BitwiseEqual(in Frame a, in Frame b) =>
         IsSameBits(a.Origin, b.Origin)
         && Bits(a.Qw) == Bits(b.Qw) && Bits(a.Qx) == Bits(b.Qx) && Bits(a.Qy) == Bits(b.Qy) && Bits(a.Qz) == Bits(b.Qz)
-        && Bits(a.M0) == Bits(b.M0) && Bits(a.M1) == Bits(b.M1) && Bits(a.M2) == Bits(b.M2)
-        && Bits(a.M3) == Bits(b.M3) && Bits(a.M4) == Bits(b.M4) && Bits(a.M5) == Bits(b.M5)
-        && Bits(a.M6) == Bits(b.M6) && Bits(a.M7) == Bits(b.M7) && Bits(a.M8) == Bits(b.M8);
+        && Bits(a.M11) == Bits(b.M11) && Bits(a.M12) == Bits(b.M12) && Bits(a.M13) == Bits(b.M13)
+        && Bits(a.M21) == Bits(b.M21) && Bits(a.M22) == Bits(b.M22) && Bits(a.M23) == Bits(b.M23)
+        && Bits(a.M31) == Bits(b.M31) && Bits(a.M32) == Bits(b.M32) && Bits(a.M33) == Bits(b.M33);
 
     private static int Bits(float f) => BitConverter.SingleToInt32Bits(f);
 

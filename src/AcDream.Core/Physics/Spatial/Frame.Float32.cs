@@ -13,16 +13,16 @@ public partial struct Frame
         float wb = _qw * b2, wc = _qw * c2, wd = _qw * d2;
         float xb = _qx * b2, xc = _qx * c2, xd = _qx * d2;
         float yc = _qy * c2, yd = _qy * d2, zd = _qz * d2;
-        _m0 = 1f - yc - zd;
-        _m1 = xc + wd;
-        _m2 = xd - wc;
-        _m3 = xc - wd;
+        _m11 = 1f - yc - zd;
+        _m12 = xc + wd;
+        _m13 = xd - wc;
+        _m21 = xc - wd;
         float oneMinusXb = 1f - xb;
-        _m4 = oneMinusXb - zd;
-        _m5 = yd + wb;
-        _m6 = xd + wc;
-        _m7 = yd - wb;
-        _m8 = oneMinusXb - yc;
+        _m22 = oneMinusXb - zd;
+        _m23 = yd + wb;
+        _m31 = xd + wc;
+        _m32 = yd - wb;
+        _m33 = oneMinusXb - yc;
     }
 
     /// <summary>Float32 variant of <see cref="SetRotate(float, float, float, float)"/> (same restore-on-invalid rule).</summary>
@@ -50,9 +50,9 @@ public partial struct Frame
     /// <summary>Float32 variant of <see cref="Combine"/>.</summary>
     public void CombineFloat32(in Frame f1, in Frame f2)
     {
-        float ox = f1._m6 * f2.Origin.Z + f1._m0 * f2.Origin.X + f1._m3 * f2.Origin.Y + f1.Origin.X;
-        float oy = f1._m7 * f2.Origin.Z + f1._m1 * f2.Origin.X + f1._m4 * f2.Origin.Y + f1.Origin.Y;
-        float oz = f1._m8 * f2.Origin.Z + f1._m2 * f2.Origin.X + f1._m5 * f2.Origin.Y + f1.Origin.Z;
+        float ox = f1._m31 * f2.Origin.Z + f1._m11 * f2.Origin.X + f1._m21 * f2.Origin.Y + f1.Origin.X;
+        float oy = f1._m32 * f2.Origin.Z + f1._m12 * f2.Origin.X + f1._m22 * f2.Origin.Y + f1.Origin.Y;
+        float oz = f1._m33 * f2.Origin.Z + f1._m13 * f2.Origin.X + f1._m23 * f2.Origin.Y + f1.Origin.Z;
         float nz = f2._qy * f1._qx + f2._qz * f1._qw - f1._qy * f2._qx + f1._qz * f2._qw;
         float ny = f2._qy * f1._qw - f2._qz * f1._qx + f1._qz * f2._qx + f1._qy * f2._qw;
         float nx = f1._qw * f2._qx + f2._qz * f1._qy + f2._qw * f1._qx - f2._qy * f1._qz;
@@ -87,13 +87,13 @@ public partial struct Frame
 
     /// <summary>Float32 variant of <see cref="LocalToGlobal"/>.</summary>
     public readonly Vector3 LocalToGlobalFloat32(Vector3 p) => new(
-        _m6 * p.Z + _m0 * p.X + _m3 * p.Y + Origin.X,
-        _m7 * p.Z + _m1 * p.X + _m4 * p.Y + Origin.Y,
-        _m8 * p.Z + _m2 * p.X + _m5 * p.Y + Origin.Z);
+        _m31 * p.Z + _m11 * p.X + _m21 * p.Y + Origin.X,
+        _m32 * p.Z + _m12 * p.X + _m22 * p.Y + Origin.Y,
+        _m33 * p.Z + _m13 * p.X + _m23 * p.Y + Origin.Z);
 
     /// <summary>Float32 variant of <see cref="LocalToGlobalVec"/>.</summary>
     public readonly Vector3 LocalToGlobalVecFloat32(Vector3 v) => new(
-        _m6 * v.Z + _m0 * v.X + _m3 * v.Y,
-        _m7 * v.Z + _m1 * v.X + _m4 * v.Y,
-        _m8 * v.Z + _m2 * v.X + _m5 * v.Y);
+        _m31 * v.Z + _m11 * v.X + _m21 * v.Y,
+        _m32 * v.Z + _m12 * v.X + _m22 * v.Y,
+        _m33 * v.Z + _m13 * v.X + _m23 * v.Y);
 }

@@ -10,9 +10,9 @@ public partial struct Frame
     public readonly Vector3 GetVectorHeading()
     {
         // Retail multiplies the other two columns by 0.0 rather than dropping them; a NaN or infinity there propagates.
-        float y = (float)(((double)_m7 + _m1) * 0.0 + _m4);
-        float z = (float)(((double)_m8 + _m2) * 0.0 + _m5);
-        float x = (float)(((double)_m6 + _m0) * 0.0 + _m3);
+        float y = (float)(((double)_m32 + _m12) * 0.0 + _m22);
+        float z = (float)(((double)_m33 + _m13) * 0.0 + _m23);
+        float x = (float)(((double)_m31 + _m11) * 0.0 + _m21);
         return new Vector3(x, y, z);
     }
 
@@ -23,8 +23,8 @@ public partial struct Frame
     // retail: Frame::get_heading (acclient.c:357409)
     public readonly double GetHeading()
     {
-        double x = ((double)_m6 + _m0) * 0.0 + _m3;
-        double y = ((double)_m7 + _m1) * 0.0 + _m4;
+        double x = ((double)_m31 + _m11) * 0.0 + _m21;
+        double y = ((double)_m32 + _m12) * 0.0 + _m22;
         return HeadingMath.CompassFromAtan2(Math.Atan2(y, x));
     }
 
@@ -35,7 +35,7 @@ public partial struct Frame
     // retail: Frame::set_heading (acclient.c:357691)
     public void SetHeading(float degrees)
     {
-        float dz = (float)(((double)_m8 + _m2) * 0.0 + _m5);
+        float dz = (float)(((double)_m33 + _m13) * 0.0 + _m23);
         double rad = degrees * HeadingMath.DegToRad;
         (double sin, double cos) = Math.SinCos(rad); // the same bits as Sin and Cos (SinCosEquivalenceTests)
         var direction = new Vector3((float)sin, (float)cos, dz);

@@ -10,9 +10,9 @@ public partial struct Frame
     // retail: Frame::localtoglobal (acclient.c:143701)
     public readonly Vector3 LocalToGlobal(Vector3 p)
     {
-        double z = (double)_m8 * p.Z + (double)_m2 * p.X + (double)_m5 * p.Y + Origin.Z;
-        double y = (double)_m7 * p.Z + (double)_m1 * p.X + (double)_m4 * p.Y + Origin.Y;
-        double x = (double)_m6 * p.Z + (double)_m0 * p.X + (double)_m3 * p.Y + Origin.X;
+        double z = (double)_m33 * p.Z + (double)_m13 * p.X + (double)_m23 * p.Y + Origin.Z;
+        double y = (double)_m32 * p.Z + (double)_m12 * p.X + (double)_m22 * p.Y + Origin.Y;
+        double x = (double)_m31 * p.Z + (double)_m11 * p.X + (double)_m21 * p.Y + Origin.X;
         return new Vector3((float)x, (float)y, (float)z);
     }
 
@@ -20,9 +20,9 @@ public partial struct Frame
     // retail: Frame::localtoglobalvec (acclient.c:143658)
     public readonly Vector3 LocalToGlobalVec(Vector3 v)
     {
-        double z = (double)_m8 * v.Z + (double)_m2 * v.X + (double)_m5 * v.Y;
-        double y = (double)_m7 * v.Z + (double)_m1 * v.X + (double)_m4 * v.Y;
-        double x = (double)_m6 * v.Z + (double)_m0 * v.X + (double)_m3 * v.Y;
+        double z = (double)_m33 * v.Z + (double)_m13 * v.X + (double)_m23 * v.Y;
+        double y = (double)_m32 * v.Z + (double)_m12 * v.X + (double)_m22 * v.Y;
+        double x = (double)_m31 * v.Z + (double)_m11 * v.X + (double)_m21 * v.Y;
         return new Vector3((float)x, (float)y, (float)z);
     }
 
@@ -34,9 +34,9 @@ public partial struct Frame
         float dy = p.Y - Origin.Y;
         double dzWide = (double)p.Z - Origin.Z; // the z row keeps the difference on the x87 stack (acclient.c:143733)
         float dz = (float)dzWide;               // the x and y rows use its float spill
-        double z = dzWide * _m8 + (double)dx * _m6 + (double)dy * _m7;
-        double y = (double)dz * _m5 + (double)dx * _m3 + (double)dy * _m4;
-        double x = (double)dz * _m2 + (double)dx * _m0 + (double)dy * _m1;
+        double z = dzWide * _m33 + (double)dx * _m31 + (double)dy * _m32;
+        double y = (double)dz * _m23 + (double)dx * _m21 + (double)dy * _m22;
+        double x = (double)dz * _m13 + (double)dx * _m11 + (double)dy * _m12;
         return new Vector3((float)x, (float)y, (float)z);
     }
 
@@ -44,9 +44,9 @@ public partial struct Frame
     // retail: Frame::globaltolocalvec (acclient.c:143674)
     public readonly Vector3 GlobalToLocalVec(Vector3 v)
     {
-        double z = (double)_m8 * v.Z + (double)_m6 * v.X + (double)_m7 * v.Y;
-        double y = (double)_m5 * v.Z + (double)_m3 * v.X + (double)_m4 * v.Y;
-        double x = (double)_m2 * v.Z + (double)_m0 * v.X + (double)_m1 * v.Y;
+        double z = (double)_m33 * v.Z + (double)_m31 * v.X + (double)_m32 * v.Y;
+        double y = (double)_m23 * v.Z + (double)_m21 * v.X + (double)_m22 * v.Y;
+        double x = (double)_m13 * v.Z + (double)_m11 * v.X + (double)_m12 * v.Y;
         return new Vector3((float)x, (float)y, (float)z);
     }
 
@@ -62,9 +62,9 @@ public partial struct Frame
     // retail: Frame::rotate (acclient.c:143690)
     public void Rotate(Vector3 w)
     {
-        float gx = (float)((double)_m6 * w.Z + (double)_m0 * w.X + (double)_m3 * w.Y);
-        float gy = (float)((double)_m7 * w.Z + (double)_m1 * w.X + (double)_m4 * w.Y);
-        float gz = (float)((double)_m8 * w.Z + (double)_m2 * w.X + (double)_m5 * w.Y);
+        float gx = (float)((double)_m31 * w.Z + (double)_m11 * w.X + (double)_m21 * w.Y);
+        float gy = (float)((double)_m32 * w.Z + (double)_m12 * w.X + (double)_m22 * w.Y);
+        float gz = (float)((double)_m33 * w.Z + (double)_m13 * w.X + (double)_m23 * w.Y);
         GRotate(new Vector3(gx, gy, gz));
     }
 

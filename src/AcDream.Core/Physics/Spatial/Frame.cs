@@ -10,14 +10,19 @@ namespace AcDream.Core.Physics.Spatial;
 /// </summary>
 /// <remarks>
 /// <para><b>Conventions.</b> +X east, +Y north, +Z up; headings are degrees clockwise from north (+Y), so heading 90 faces +X.</para>
-/// <para><b>The cached matrix</b> <c>m_fl2gv[0..8]</c> (<see cref="M0"/>..<see cref="M8"/>) is stored by columns: entries 0..2 are
-/// the global image of the local X axis, 3..5 of local Y, 6..8 of local Z. So a local point p maps to
-/// <c>global = M0..2 * p.x + M3..5 * p.y + M6..8 * p.z + origin</c>. From the quaternion (w, x, y, z):
+/// <para><b>The cached matrix</b> is retail's <c>m_fl2gv[0..8]</c>, the local-to-global rotation, named here as
+/// System.Numerics names a matrix for row vectors (<c>v' = v * M</c>): row r holds the global image of local axis r, so
+/// M11, M12, M13 (<c>m_fl2gv[0..2]</c>) are the global x, y, z of the local X axis, M21..M23 (<c>[3..5]</c>) of local Y,
+/// M31..M33 (<c>[6..8]</c>) of local Z; <c>m_fl2gv[3(r − 1) + (c − 1)]</c> = Mrc. A local point p maps to
+/// <c>global = (M11, M12, M13) p.x + (M21, M22, M23) p.y + (M31, M32, M33) p.z + origin</c>. From the quaternion (w, x, y, z)
+/// (the same entries as <see cref="Matrix4x4.CreateFromQuaternion"/>):
 /// <code>
-/// M0 = 1 - 2y² - 2z²   M3 = 2xy - 2wz       M6 = 2xz + 2wy
-/// M1 = 2xy + 2wz       M4 = 1 - 2x² - 2z²   M7 = 2yz - 2wx
-/// M2 = 2xz - 2wy       M5 = 2yz + 2wx       M8 = 1 - 2x² - 2y²
-/// </code></para>
+/// M11 = 1 - 2y² - 2z²   M21 = 2xy - 2wz       M31 = 2xz + 2wy
+/// M12 = 2xy + 2wz       M22 = 1 - 2x² - 2z²   M32 = 2yz - 2wx
+/// M13 = 2xz - 2wy       M23 = 2yz + 2wx       M33 = 1 - 2x² - 2y²
+/// </code>
+/// The engine reads the entries one by one (internal) in retail's operand order; the public reads them as
+/// <see cref="RotationMatrix"/>.</para>
 /// <para><b>Arithmetic.</b> Retail computed its intermediates on the x87 stack; this port evaluates them in double in retail's
 /// operand order and rounds to float exactly where retail stored a float, so results are bit-for-bit repeatable.
 /// No System.Numerics helper that may fuse multiply-add is used here.</para>
@@ -27,7 +32,7 @@ namespace AcDream.Core.Physics.Spatial;
 public partial struct Frame : IEquatable<Frame>
 {
     private float _qw, _qx, _qy, _qz;
-    private float _m0, _m1, _m2, _m3, _m4, _m5, _m6, _m7, _m8;
+    private float _m11, _m12, _m13, _m21, _m22, _m23, _m31, _m32, _m33;
 
     /// <summary>The frame's origin, in the coordinates of its parent (for a position: local to its landblock), metres.</summary>
     public Vector3 Origin;
@@ -105,32 +110,43 @@ public partial struct Frame : IEquatable<Frame>
     /// <summary>The rotation as a System.Numerics quaternion (its X, Y, Z, W are retail's qx, qy, qz, qw).</summary>
     public readonly Quaternion Rotation => new(_qx, _qy, _qz, _qw);
 
-    /// <summary>Cached matrix entry m_fl2gv[0]: global x of the local X axis.</summary>
-    public readonly float M0 => _m0;
+    /// <summary>
+    /// The cached local-to-global rotation (retail <c>m_fl2gv</c>) as a System.Numerics matrix for row vectors: rows 1..3
+    /// are the global images of the local X, Y and Z axes (<c>Vector3.TransformNormal(v, RotationMatrix)</c> turns a local
+    /// direction into global axes, up to rounding); the fourth row and column are those of the identity.
+    /// </summary>
+    public readonly Matrix4x4 RotationMatrix => new(
+        _m11, _m12, _m13, 0f,
+        _m21, _m22, _m23, 0f,
+        _m31, _m32, _m33, 0f,
+        0f, 0f, 0f, 1f);
 
-    /// <summary>Cached matrix entry m_fl2gv[1]: global y of the local X axis.</summary>
-    public readonly float M1 => _m1;
+    /// <summary>Cached matrix row 1, column 1 (retail <c>m_fl2gv[0]</c>): global x of the local X axis.</summary>
+    internal readonly float M11 => _m11;
 
-    /// <summary>Cached matrix entry m_fl2gv[2]: global z of the local X axis.</summary>
-    public readonly float M2 => _m2;
+    /// <summary>Cached matrix row 1, column 2 (retail <c>m_fl2gv[1]</c>): global y of the local X axis.</summary>
+    internal readonly float M12 => _m12;
 
-    /// <summary>Cached matrix entry m_fl2gv[3]: global x of the local Y axis.</summary>
-    public readonly float M3 => _m3;
+    /// <summary>Cached matrix row 1, column 3 (retail <c>m_fl2gv[2]</c>): global z of the local X axis.</summary>
+    internal readonly float M13 => _m13;
 
-    /// <summary>Cached matrix entry m_fl2gv[4]: global y of the local Y axis.</summary>
-    public readonly float M4 => _m4;
+    /// <summary>Cached matrix row 2, column 1 (retail <c>m_fl2gv[3]</c>): global x of the local Y axis.</summary>
+    internal readonly float M21 => _m21;
 
-    /// <summary>Cached matrix entry m_fl2gv[5]: global z of the local Y axis.</summary>
-    public readonly float M5 => _m5;
+    /// <summary>Cached matrix row 2, column 2 (retail <c>m_fl2gv[4]</c>): global y of the local Y axis.</summary>
+    internal readonly float M22 => _m22;
 
-    /// <summary>Cached matrix entry m_fl2gv[6]: global x of the local Z axis.</summary>
-    public readonly float M6 => _m6;
+    /// <summary>Cached matrix row 2, column 3 (retail <c>m_fl2gv[5]</c>): global z of the local Y axis.</summary>
+    internal readonly float M23 => _m23;
 
-    /// <summary>Cached matrix entry m_fl2gv[7]: global y of the local Z axis.</summary>
-    public readonly float M7 => _m7;
+    /// <summary>Cached matrix row 3, column 1 (retail <c>m_fl2gv[6]</c>): global x of the local Z axis.</summary>
+    internal readonly float M31 => _m31;
 
-    /// <summary>Cached matrix entry m_fl2gv[8]: global z of the local Z axis.</summary>
-    public readonly float M8 => _m8;
+    /// <summary>Cached matrix row 3, column 2 (retail <c>m_fl2gv[7]</c>): global y of the local Z axis.</summary>
+    internal readonly float M32 => _m32;
+
+    /// <summary>Cached matrix row 3, column 3 (retail <c>m_fl2gv[8]</c>): global z of the local Z axis.</summary>
+    internal readonly float M33 => _m33;
 
     /// <summary>Rebuilds the cached matrix from the quaternion (intermediates in double, as retail's x87 code).</summary>
     // retail: Frame::cache (acclient.c:356983)
@@ -152,16 +168,16 @@ public partial struct Frame : IEquatable<Frame>
         double yc = qy * c2;
         double yd = qy * d2;
         double zd = qz * d2;
-        _m0 = (float)(1.0 - yc - zd);
-        _m1 = (float)(xc + wd);
-        _m2 = (float)(xd - wc);
-        _m3 = (float)(xc - wd);
+        _m11 = (float)(1.0 - yc - zd);
+        _m12 = (float)(xc + wd);
+        _m13 = (float)(xd - wc);
+        _m21 = (float)(xc - wd);
         double oneMinusXb = 1.0 - xb;
-        _m4 = (float)(oneMinusXb - zd);
-        _m5 = (float)(yd + wb);
-        _m6 = (float)(xd + wc);
-        _m7 = (float)(yd - wb);
-        _m8 = (float)(oneMinusXb - yc);
+        _m22 = (float)(oneMinusXb - zd);
+        _m23 = (float)(yd + wb);
+        _m31 = (float)(xd + wc);
+        _m32 = (float)(yd - wb);
+        _m33 = (float)(oneMinusXb - yc);
     }
 
     /// <summary>
@@ -256,9 +272,9 @@ public partial struct Frame : IEquatable<Frame>
     private static void CombineProduct(in Frame f1, in Frame f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz)
     {
         double px = f2.Origin.X, py = f2.Origin.Y, pz = f2.Origin.Z;
-        double ox = f1._m6 * pz + f1._m0 * px + f1._m3 * py + f1.Origin.X;
-        double oy = f1._m7 * pz + f1._m1 * px + f1._m4 * py + f1.Origin.Y;
-        double oz = f1._m8 * pz + f1._m2 * px + f1._m5 * py + f1.Origin.Z;
+        double ox = f1._m31 * pz + f1._m11 * px + f1._m21 * py + f1.Origin.X;
+        double oy = f1._m32 * pz + f1._m12 * px + f1._m22 * py + f1.Origin.Y;
+        double oz = f1._m33 * pz + f1._m13 * px + f1._m23 * py + f1.Origin.Z;
         double aw = f1._qw, ax = f1._qx, ay = f1._qy, az = f1._qz;
         double bw = f2._qw, bx = f2._qx, by = f2._qy, bz = f2._qz;
         nz = (float)(by * ax + bz * aw - ay * bx + az * bw);
@@ -295,9 +311,9 @@ public partial struct Frame : IEquatable<Frame>
         double vx = -localOrigin.X;
         double vy = -localOrigin.Y;
         double vz = -localOrigin.Z;
-        float gx = (float)(vz * _m6 + vx * _m0 + vy * _m3);
-        float gy = (float)(vz * _m7 + vx * _m1 + vy * _m4);
-        double gz = vz * _m8 + vx * _m2 + vy * _m5;
+        float gx = (float)(vz * _m31 + vx * _m11 + vy * _m21);
+        float gy = (float)(vz * _m32 + vx * _m12 + vy * _m22);
+        double gz = vz * _m33 + vx * _m13 + vy * _m23;
         Origin = new Vector3((float)(gx + (double)combinedOrigin.X), (float)(gy + (double)combinedOrigin.Y), (float)(gz + combinedOrigin.Z));
     }
 
@@ -339,9 +355,9 @@ public partial struct Frame : IEquatable<Frame>
     public readonly bool Equals(Frame other) =>
         Origin.Equals(other.Origin)
         && _qw.Equals(other._qw) && _qx.Equals(other._qx) && _qy.Equals(other._qy) && _qz.Equals(other._qz)
-        && _m0.Equals(other._m0) && _m1.Equals(other._m1) && _m2.Equals(other._m2)
-        && _m3.Equals(other._m3) && _m4.Equals(other._m4) && _m5.Equals(other._m5)
-        && _m6.Equals(other._m6) && _m7.Equals(other._m7) && _m8.Equals(other._m8);
+        && _m11.Equals(other._m11) && _m12.Equals(other._m12) && _m13.Equals(other._m13)
+        && _m21.Equals(other._m21) && _m22.Equals(other._m22) && _m23.Equals(other._m23)
+        && _m31.Equals(other._m31) && _m32.Equals(other._m32) && _m33.Equals(other._m33);
 
     /// <inheritdoc />
     public override readonly bool Equals(object? obj) => obj is Frame f && Equals(f);

@@ -287,9 +287,9 @@ public sealed partial class BspTree
             ref readonly Frame f = ref path.LocalSpacePos.Frame;
             Vector3 n = hitPoly.Plane.N;
             var g = new Vector3(
-                (float)((double)f.M0 * n.X + (double)f.M3 * n.Y + (double)f.M6 * n.Z),
-                (float)((double)f.M1 * n.X + (double)f.M4 * n.Y + (double)f.M7 * n.Z),
-                (float)((double)f.M2 * n.X + (double)f.M5 * n.Y + (double)f.M8 * n.Z));
+                (float)((double)f.M11 * n.X + (double)f.M21 * n.Y + (double)f.M31 * n.Z),
+                (float)((double)f.M12 * n.X + (double)f.M22 * n.Y + (double)f.M32 * n.Z),
+                (float)((double)f.M13 * n.X + (double)f.M23 * n.Y + (double)f.M33 * n.Z));
             collisions.SetCollisionNormal(g);
             return TransitionState.Collided;
         }
@@ -401,9 +401,9 @@ public sealed partial class BspTree
     {
         ref readonly Frame f = ref path.LocalSpacePos.Frame;
         return new Vector3(
-            (float)((double)f.M6 * n.Z + (double)f.M0 * n.X + (double)f.M3 * n.Y),
-            (float)((double)f.M7 * n.Z + (double)f.M1 * n.X + (double)f.M4 * n.Y),
-            (float)((double)f.M8 * n.Z + (double)f.M2 * n.X + (double)f.M5 * n.Y));
+            (float)((double)f.M31 * n.Z + (double)f.M11 * n.X + (double)f.M21 * n.Y),
+            (float)((double)f.M32 * n.Z + (double)f.M12 * n.X + (double)f.M22 * n.Y),
+            (float)((double)f.M33 * n.Z + (double)f.M13 * n.X + (double)f.M23 * n.Y));
     }
 
     private static Vector3 ScaledLocalToGlobal(SpherePath path, Vector3 to, Vector3 from, float scale)

@@ -18,9 +18,9 @@ public static class PlaneSpace
         var point = new Vector3((float)(nd * localPlane.N.X), (float)(nd * localPlane.N.Y), (float)(nd * localPlane.N.Z));
         ref readonly Frame f = ref from.Frame;
         Vector3 n = localPlane.N;
-        float gx = (float)((double)f.M6 * n.Z + (double)f.M3 * n.Y + (double)f.M0 * n.X);
-        float gy = (float)((double)f.M7 * n.Z + (double)f.M4 * n.Y + (double)f.M1 * n.X);
-        float gz = (float)((double)f.M8 * n.Z + (double)f.M5 * n.Y + (double)f.M2 * n.X);
+        float gx = (float)((double)f.M31 * n.Z + (double)f.M21 * n.Y + (double)f.M11 * n.X);
+        float gy = (float)((double)f.M32 * n.Z + (double)f.M22 * n.Y + (double)f.M12 * n.X);
+        float gz = (float)((double)f.M33 * n.Z + (double)f.M23 * n.Y + (double)f.M13 * n.X);
         Vector3 g = to.LocalToGlobal(from, point);
         double s = (double)gz * g.Z + (double)gy * g.Y;
         double d = -(s + (double)gx * g.X);
