@@ -25,7 +25,8 @@ public readonly struct EnvCollisionProfile
 
 /// <summary>
 /// The client's collision callbacks (retail: the object's weenie, <c>CWeenieObject::DoCollision</c>). Called inside the
-/// tick: implementations must not allocate and must not start a sweep of the same object.
+/// tick: implementations must not allocate and must not start a sweep of the same object. Placing or sweeping another object
+/// is safe: it takes a transition of its own, and the reporter's commit goes on with its own.
 /// </summary>
 public interface ICollisionListener
 {

@@ -10,7 +10,8 @@ namespace AcDream.Core.Physics.Collision;
 /// cleanupTransition acclient.c:311588); the port keeps it per world instead of global.
 /// </summary>
 /// <remarks>A transition stays readable after <see cref="Cleanup"/> until the next <see cref="Make"/> takes its slot —
-/// retail's <c>CPhysicsObj::transition</c> cleans up before its caller reads the result.</remarks>
+/// retail's <c>CPhysicsObj::transition</c> cleans up before its caller reads the result. The tick keeps its slot until the
+/// commit is done instead, so that a sweep started from a collision report cannot overwrite it (docs/divergences.md).</remarks>
 internal sealed class TransitionPool
 {
     /// <summary>Number of transitions, the deepest nesting. Retail: 10 (acclient.c:312542).</summary>

@@ -46,6 +46,9 @@ public abstract class CollisionSweep
     /// <paramref name="result"/> and returns true; on failure (blocked, or no transition available) returns false and
     /// the object keeps its origin.
     /// </summary>
+    /// <remarks>The tick commits the result (<see cref="PhysicsObj.CommitTransition"/>'s work) with no collision response: a
+    /// result carries no collisions, so a client sweep reports its own. <see cref="RetailSweep"/> is not called through here
+    /// by the tick: its transition goes to the commit itself, with its collisions and cells.</remarks>
     // retail seam: CPhysicsObj::transition (acclient.c:320060); the retail sweep ports it as PhysicsObj.RunTransition
     public abstract bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result);
 
