@@ -7,7 +7,7 @@ namespace AcDream.Core.Physics.Cells;
 // The indoor cell as a collision cell of the sweep.
 public sealed partial class EnvCell
 {
-    /// <summary>The cell's walls and floors, then the objects in it (object shadows: a later part of the port).</summary>
+    /// <summary>The cell's walls and floors, then the objects in it (the shadows of the objects that overlap it).</summary>
     // retail: CEnvCell::find_collisions (acclient.c:347809)
     internal override TransitionState FindCollisions(Transition transition)
     {

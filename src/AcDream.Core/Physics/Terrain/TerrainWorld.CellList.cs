@@ -15,7 +15,7 @@ public sealed partial class TerrainWorld
     /// </summary>
     /// <remarks>
     /// Outdoor half of retail's <c>find_cell_list</c>: an indoor <paramref name="p"/> contributes just its own id (and no
-    /// current land cell); buildings' portal cells (<c>find_transit_cells</c>) belong to a later part of the port.
+    /// current land cell); buildings' portal cells (<c>find_transit_cells</c>) are not added here: the sweep's own cell list adds them.
     /// Ids of cells whose landblock is not loaded are listed too (retail lists them with a null cell).
     /// </remarks>
     /// <exception cref="ArgumentException">See <see cref="LandCell.AddAllOutsideCells"/>.</exception>

@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics.Collision.Sweep;
 
 /// <summary>
 /// The one seam through which the collision sweep plugs into the object tick. A world holds one; the built-in
-/// <see cref="FreeSpaceSweep"/> sweeps through empty space until the collision module provides the retail sweep.
+/// <see cref="FreeSpaceSweep"/> sweeps through empty space (a world built without cells); <see cref="RetailSweep"/> is the retail sweep.
 /// </summary>
 /// <remarks>Every member is called inside the tick and must not allocate.</remarks>
 public abstract class CollisionSweep

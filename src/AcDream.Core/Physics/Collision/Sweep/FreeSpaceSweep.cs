@@ -9,7 +9,7 @@ namespace AcDream.Core.Physics.Collision.Sweep;
 /// (adjusted to the outdoor cell under the origin, as <c>store_position</c> does), or sends the object to the lost cell when
 /// the cell id is not a valid world cell.
 /// </summary>
-/// <remarks>Not retail: retail always sweeps against cells. This stands in until the collision module provides the sweep.</remarks>
+/// <remarks>Not retail: retail always sweeps against cells. It is what <c>new PhysicsWorld()</c> gets; a world built over cells gets <see cref="RetailSweep"/>.</remarks>
 public sealed class FreeSpaceSweep : CollisionSweep
 {
     /// <summary>The shared stateless instance.</summary>

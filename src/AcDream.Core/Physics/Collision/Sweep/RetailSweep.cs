@@ -9,7 +9,7 @@ namespace AcDream.Core.Physics.Collision.Sweep;
 
 /// <summary>
 /// The retail collision sweep plugged into the object tick: <see cref="PhysicsWorld.Sweep"/> set to an instance of
-/// this class makes every object move through the cells of <see cref="Cells"/> (outdoor terrain today) exactly as
+/// this class makes every object move through the cells of <see cref="Cells"/> (the outdoor terrain and its buildings, and the indoor cells of a <see cref="WorldCells"/>) exactly as
 /// retail's <c>CPhysicsObj::transition</c> moves it, and answers placements and the collision response.
 /// </summary>
 /// <remarks>One instance per world: it owns the world's pool of ten transitions (retail's <c>CTransition::transit</c>). Nothing here allocates per call.</remarks>
