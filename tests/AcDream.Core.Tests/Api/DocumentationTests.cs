@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 using System.Text.RegularExpressions;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
@@ -166,5 +167,66 @@ public sealed partial class DocumentationTests
 
         Assert.True(stale.Count == 0, "Stale phrases (fix the text, or allow the line with its reason):\n" + string.Join("\n", stale));
         Assert.True(files.Count > 100);
+    }
+
+    [GeneratedRegex(@"^(?:- )?`(\w+)`: (.*)$")]
+    private static partial Regex TypeBullet();
+
+    [GeneratedRegex(@"`(\w+)\(")]
+    private static partial Regex MethodCall();
+
+    [Fact]
+    public void InterpolationDocsPublicApi_NamesOnlyPublicMethods()
+    {
+        // docs/interpolation.md "Public API (client)": each bullet "- `Type`: ..." names methods of that public type; every
+        // `Name(` there must be a public method of it (the page once listed Enqueue, GetNode, AdjustOffset, UseTime and
+        // EnqueueNode, none of them public). An entry runs on over its continuation lines.
+        string text = File.ReadAllText(Path.Combine(Root, "docs", "interpolation.md"));
+        int start = text.IndexOf("## Public API (client)", StringComparison.Ordinal);
+        Assert.True(start >= 0, "the section is missing");
+        int end = text.IndexOf("\n## ", start + 1, StringComparison.Ordinal);
+        string section = text[start..(end < 0 ? text.Length : end)];
+        var bullets = new List<string>();
+        foreach (string line in section.Split('\n'))
+        {
+            if (line.StartsWith("- ", StringComparison.Ordinal) || TypeBullet().IsMatch(line))
+            {
+                bullets.Add(line);
+            }
+            else if (line.Trim().Length > 0 && bullets.Count > 0)
+            {
+                bullets[^1] += " " + line.Trim();
+            }
+        }
+
+        var exported = new Dictionary<string, Type>();
+        foreach (Type t in typeof(AcDream.Core.Physics.Objects.PhysicsObj).Assembly.GetExportedTypes())
+        {
+            exported[t.Name] = t;
+        }
+
+        var bad = new List<string>();
+        int checkedTypes = 0;
+        foreach (string bullet in bullets)
+        {
+            Match b = TypeBullet().Match(bullet);
+            if (!b.Success || !exported.TryGetValue(b.Groups[1].Value, out Type? type))
+            {
+                continue;
+            }
+
+            checkedTypes++;
+            foreach (Match m in MethodCall().Matches(b.Groups[2].Value))
+            {
+                if (type.GetMethods(System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Static)
+                    .All(x => x.Name != m.Groups[1].Value))
+                {
+                    bad.Add(type.Name + "." + m.Groups[1].Value);
+                }
+            }
+        }
+
+        Assert.Empty(bad);
+        Assert.True(checkedTypes >= 2, "expected entries for PhysicsObj and the managers");
     }
 }
