@@ -66,7 +66,9 @@ internal sealed class SceneCheck
         // 4 m/s up under 9.8 m/s²: 0.82 m of free flight after a first step of 4/30 m: about 0.95 m over level ground (more
         // where the ground falls away under the jump).
         bool jumped = _jumpHeight is > 0.5f and < 1.5f;
-        // The feet sphere (radius 0.48) stops at the wall: the origin stays about 0.48 m from it, never inside.
+        // The feet sphere (radius 0.48) stays where its last collision-free step ended and slides from there: the origin keeps
+        // between 0.48 m and 0.48 m plus one step's approach from the wall (3.12 m/s x cos 25.5° x 1/30 s = 0.094 m at this
+        // walk and frame rate; Behavior/WallStopDistanceTests), never inside.
         float radius = SetupPhysicsRadius;
         bool hut = _closestToHut > radius - 0.05f && _closestToHut < radius + 0.1f;
         float error = remote.ErrorAt(now);

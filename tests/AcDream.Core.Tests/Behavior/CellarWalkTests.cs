@@ -167,7 +167,7 @@ public class CellarWalkTests
 
             Vector3 feet = Feet(obj);
             Vector3 c0 = feet + new Vector3(0f, 0f, HumanWalker.Radius);
-            Vector3 c1 = feet + new Vector3(0f, 0f, HumanWalker.Height - HumanWalker.Radius);
+            Vector3 c1 = feet + new Vector3(0f, 0f, HumanWalker.HeadCentre);
             string at = $"tick {tick}, cell 0x{id:X8}, feet {feet}";
             Assert.True((obj.TransientState & TransientState.Contact) != 0, $"out of contact at {at}");
             if (CellarScene.IsIndoor(id))

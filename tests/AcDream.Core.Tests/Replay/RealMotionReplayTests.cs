@@ -3,21 +3,23 @@ using System.Globalization;
 using System.IO;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Tests.Replay.Harness;
-using AcDream.Core.Tests.Support.Shared;
+using AcDream.Core.Tests.Support;
 using Xunit;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Replay;
 
-/// <summary>A fact that needs the real replay recordings (../shared/data/replay, found beside ACDREAM_TERRAIN_DIR).</summary>
+/// <summary>A fact that needs the real replay recordings (<c>ACDREAM_REPLAY_DIR</c>, else ../shared/data/replay beside the
+/// terrain folder; see <see cref="SharedDataDir.Replay"/>); skipped with the reason when they are absent
+/// (<c>ReplayDataReportTests</c> prints the reason in every run).</summary>
 public sealed class ReplayDataFactAttribute : FactAttribute
 {
     /// <summary>Skips the test when the recordings are not available.</summary>
     public ReplayDataFactAttribute()
     {
-        if (RealMotionReplayTests.Dir is null)
+        if (SharedDataDir.Replay.Find(out string reason) is null)
         {
-            Skip = $"Real replay data not available: no replay folder beside the terrain data ({TerrainDataDir.Variable} or ../shared/data/ac-terrain), so ../shared/data/replay is absent.";
+            Skip = "Real replay data not found: " + reason + ".";
         }
     }
 }
@@ -27,21 +29,7 @@ public sealed class ReplayDataFactAttribute : FactAttribute
 public class RealMotionReplayTests(ITestOutputHelper output)
 {
     /// <summary>The replay folder, or null.</summary>
-    public static string? Dir
-    {
-        get
-        {
-            // The replay folder lies beside the terrain folder, found as every real-terrain test finds it.
-            string? terrain = TerrainDataDir.Find(out _);
-            if (terrain is null)
-            {
-                return null;
-            }
-
-            string dir = Path.GetFullPath(Path.Combine(terrain, "..", "replay"));
-            return File.Exists(Path.Combine(dir, "long-movement-run_s2c_movementevent.csv")) ? dir : null;
-        }
-    }
+    public static string? Dir => SharedDataDir.Replay.Dir;
 
     private const uint Brenwick = 0x5000001Du;
 

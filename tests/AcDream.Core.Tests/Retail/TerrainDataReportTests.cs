@@ -40,6 +40,66 @@ public sealed class TerrainDataReportTests
     }
 }
 
+/// <summary>
+/// The same status line for another folder of ../shared/data (<see cref="SharedDataDir"/>): "geometry" (the cellar dumps of
+/// <c>CellarWalkTests</c>) or "replay" (the recordings of <c>RealMotionReplayTests</c>). Its display name says where the data
+/// comes from or, skipped, why the tests that read it are skipped, so that a run without the data says so at the default
+/// verbosity.
+/// </summary>
+public sealed class SharedDataStatusFactAttribute : FactAttribute
+{
+    /// <summary>Names the folder of <paramref name="folder"/> ("geometry" or "replay"), or skips with the reason.</summary>
+    public SharedDataStatusFactAttribute(string folder)
+    {
+        SharedDataDir data = SharedDataReportTests.Of(folder);
+        string? dir = data.Find(out string reason);
+        if (dir is null)
+        {
+            DisplayName = $"Real-{folder} tests are skipped: {reason}";
+            Skip = $"Real {folder} data not found: {reason}.";
+        }
+        else
+        {
+            DisplayName = $"Real-{folder} tests read {dir}";
+        }
+    }
+}
+
+/// <summary>The status lines of the geometry and replay tests (see <see cref="SharedDataStatusFactAttribute"/>).</summary>
+public sealed class SharedDataReportTests
+{
+    /// <summary>The lookup of a folder name.</summary>
+    internal static SharedDataDir Of(string folder) => folder switch
+    {
+        "geometry" => SharedDataDir.Geometry,
+        "replay" => SharedDataDir.Replay,
+        _ => throw new System.ArgumentException("Unknown data folder: " + folder, nameof(folder)),
+    };
+
+    /// <summary>The geometry folder found holds the dump the cellar scene reads first.</summary>
+    [SharedDataStatusFact("geometry")]
+    public void Reports_where_the_real_geometry_comes_from() => AssertFound(SharedDataDir.Geometry);
+
+    /// <summary>The replay folder found holds the recording the replay tests read first.</summary>
+    [SharedDataStatusFact("replay")]
+    public void Reports_where_the_real_replay_comes_from() => AssertFound(SharedDataDir.Replay);
+
+    [Fact]
+    public void AVariableNamingAFolderWithoutTheMarker_IsNotFound_AndTheReasonSaysWhy()
+    {
+        string dir = System.IO.Path.Combine(System.IO.Path.GetTempPath(), "acdream-nodata-" + System.Guid.NewGuid().ToString("N"));
+        Assert.Null(SharedDataDir.Resolve("ACDREAM_REPLAY_DIR", "replay", "marker.csv", dir, out string reason));
+        Assert.Equal($"ACDREAM_REPLAY_DIR={dir} resolves to {dir}, which has no marker.csv", reason);
+    }
+
+    private static void AssertFound(SharedDataDir data)
+    {
+        string? dir = data.Find(out _);
+        Assert.NotNull(dir);
+        Assert.True(System.IO.File.Exists(System.IO.Path.Combine(dir, data.Marker)));
+    }
+}
+
 /// <summary>The terrain folder lookup shared by the tests and the report (<see cref="TerrainDataDir.Resolve"/>).</summary>
 public sealed class TerrainDataDirTests : System.IDisposable
 {

@@ -20,8 +20,10 @@ public enum ObjectSetupIssues
     /// root motion and velocity do not move it.</summary>
     NoCollisionSpheres = 1 << 1,
 
-    /// <summary>No movement manager: at rest on walkable ground the object deactivates itself every other step (walking at
-    /// half speed). <see cref="PhysicsObj.GetMinterp"/> creates one; the world's player gets one when it is set.</summary>
+    /// <summary>No movement manager: each step that begins at rest on walkable ground deactivates the object, and only the
+    /// world's player wakes it again (within 96 m): near the player it walks at half speed, in a world without a player it
+    /// takes one step and stops. <see cref="PhysicsObj.GetMinterp"/> creates one; the world's player gets one when it is
+    /// set.</summary>
     NoMovementManager = 1 << 2,
 
     /// <summary>Step-up or step-down height at or below 0.01 m, retail's value for an object without a Setup: the object

@@ -11,8 +11,11 @@ public sealed partial class PhysicsObj
     /// <summary>
     /// What keeps this object from walking, stepping and colliding as a retail creature would: <see cref="ObjectSetupIssues.None"/>
     /// for a creature built from a Setup (<see cref="SimplePartArray(SetupPhysics, int)"/>), with a movement manager, entered
-    /// into a world over terrain. Cheap; not part of the tick. Check it once after creating an object — an issue is otherwise
-    /// silent (the object simply does not move, or moves at half speed).
+    /// into a world over terrain. Cheap; not part of the tick. Read it once the object is in place — after
+    /// <see cref="EnterWorld"/> and, for the player, after setting <see cref="World.PhysicsWorld.Player"/> (which gives it its movement
+    /// manager); before them it reports <see cref="ObjectSetupIssues.NotInCell"/> and
+    /// <see cref="ObjectSetupIssues.NoMovementManager"/> even for a correctly built object. An issue is otherwise silent (the
+    /// object does not move, moves at half speed, or takes one step and stops).
     /// </summary>
     public ObjectSetupIssues SetupIssues
     {

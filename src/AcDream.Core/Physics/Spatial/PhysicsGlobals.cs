@@ -3,10 +3,15 @@ using System;
 namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
-/// Every retail physics constant used by the object tick and the collision sweep, with its unit,
-/// its retail value and where it comes from in the decompilation of acclient.exe 11.4186.
+/// The retail physics constants shared by the object tick and the collision sweep (the time quanta, gravity, the walkable
+/// and landing slopes, the velocity limits, an object's defaults), with their unit, their retail value and where they come
+/// from in the decompilation of acclient.exe 11.4186.
 /// </summary>
 /// <remarks>
+/// <para>Not all of retail's constants are here: one that belongs to a single retail class stays with the class that ports it,
+/// documented the same way — for example the walk and run speeds on <see cref="Motion.MotionInterp"/>, the run-rate and
+/// jump terms on <see cref="Motion.MovementSystem"/>, the placement tolerance on <see cref="Collision.Sweep.RetailSweep"/>, the cell grid on <see cref="LandDefs"/>, and the
+/// managers' thresholds on the managers.</para>
 /// <para>Float constants keep retail's float32 bit pattern; constants that retail stores as
 /// <c>long double</c> (MSVC: a 64-bit double) are doubles here. Changing any of them breaks parity
 /// with the retail client; every one is pinned by a test in <c>Retail/PhysicsGlobalsTests</c>.</para>

@@ -71,40 +71,30 @@ internal sealed record CellDump(uint CellId, Matrix4x4 WorldTransform, DumpPolyg
 }
 
 /// <summary>Where the geometry dumps are: <c>ACDREAM_GEOMETRY_DIR</c>, else the <c>geometry</c> folder beside the terrain
-/// folder of <c>ACDREAM_TERRAIN_DIR</c> (both live in ../shared/data); null when neither gives an existing folder.</summary>
+/// folder (both live in ../shared/data); see <see cref="SharedDataDir.Geometry"/>.</summary>
 internal static class GeometryTestData
 {
     /// <summary>The environment variable naming the geometry folder.</summary>
     public const string Variable = "ACDREAM_GEOMETRY_DIR";
 
     /// <summary>The geometry folder, or null.</summary>
-    public static string? Dir
-    {
-        get
-        {
-            string? dir = Environment.GetEnvironmentVariable(Variable);
-            if (string.IsNullOrEmpty(dir))
-            {
-                // Beside the terrain folder, found as every real-terrain test finds it (TerrainDataDir).
-                string? terrain = TerrainTestData.FindDir(out _);
-                dir = terrain is null ? null : Path.Combine(terrain, "..", "geometry");
-            }
-
-            return dir is not null && Directory.Exists(dir) ? dir : null;
-        }
-    }
+    public static string? Dir => SharedDataDir.Geometry.Dir;
 }
 
-/// <summary>A fact that needs the real cellar geometry and the real terrain; skipped, naming both variables, when absent.</summary>
+/// <summary>A fact that needs the real cellar geometry and the real terrain; skipped with the reason when either is absent
+/// (<c>GeometryDataReportTests</c> prints the reason in every run).</summary>
 public sealed class GeometryDataFactAttribute : Xunit.FactAttribute
 {
     /// <summary>Skips the test when the geometry or terrain folder is missing.</summary>
     public GeometryDataFactAttribute()
     {
-        if (GeometryTestData.Dir is null || TerrainTestData.FindDir(out _) is null)
+        if (SharedDataDir.Geometry.Find(out string reason) is null)
         {
-            Skip = $"Real cellar geometry not available: neither {GeometryTestData.Variable} nor a geometry folder beside the terrain "
-                + $"data ({TerrainTestData.Variable} or ../shared/data/ac-terrain) was found.";
+            Skip = "Real cellar geometry not found: " + reason + ".";
+        }
+        else if (TerrainTestData.FindDir(out reason) is null)
+        {
+            Skip = "Real terrain data not found: " + reason + ".";
         }
     }
 }
