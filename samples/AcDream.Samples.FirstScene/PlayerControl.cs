@@ -30,13 +30,17 @@ internal sealed class PlayerControl
     private bool _charging;
     private bool _jumped;
 
-    /// <summary>Prepares <paramref name="player"/> (already the world's player, its weenie set): the retail motion table speeds
-    /// on its part array, and its movement manager.</summary>
+    /// <summary>Prepares <paramref name="player"/> (already the world's player, its weenie set, its part array's motion table
+    /// <paramref name="body"/>'s): its movement manager and motion interpreter.</summary>
     public PlayerControl(PhysicsObj player, SimplePartArray body)
     {
         ArgumentNullException.ThrowIfNull(player);
         ArgumentNullException.ThrowIfNull(body);
-        body.MotionTable = new RetailSpeedMotionTable();   // a client with real motion tables plugs its own in here
+        if (body.MotionTable is null)
+        {
+            throw new ArgumentException("The player's part array needs a motion table.", nameof(body));
+        }
+
         _mm = MovementManager.Of(player);
         _mi = _mm.GetMinterp();
     }

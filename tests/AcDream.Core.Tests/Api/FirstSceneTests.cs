@@ -102,7 +102,7 @@ public sealed class FirstSceneTests
         TerrainWorld terrain = Flat();
         var world = new PhysicsWorld(terrain);
         PhysicsObj player = world.CreateObject(1);
-        player.PartArray = new SimplePartArray(SetupPhysics.Human);
+        player.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
         Assert.True(player.EnterWorld(Spawn(terrain)));
         world.Player = player;
         for (int k = 1; k <= 20; k++)
@@ -158,7 +158,7 @@ public sealed class FirstSceneTests
         var body = new SimplePartArray(SetupPhysics.Human);
         creature.PartArray = body;
         Assert.True(creature.EnterWorld(Spawn(terrain)));
-        Assert.Equal(ObjectSetupIssues.NoMovementManager, creature.SetupIssues);
+        Assert.Equal(ObjectSetupIssues.NoMovementManager | ObjectSetupIssues.NoMotionTable, creature.SetupIssues);
         body.SequenceVelocity = new Vector3(0f, 3f, 0f);
         for (int k = 1; k <= 20; k++)
         {

@@ -92,9 +92,12 @@ public sealed class InterpretedMotionState
     }
 
     /// <summary>Records a started motion: turn, side-step, substate, style or action.</summary>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed
+    /// is NaN or infinite (state unchanged).</exception>
     // retail: InterpretedMotionState::ApplyMotion (acclient.c:332758)
     public void ApplyMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         if (motion == MotionCommand.TurnRight)
         {
             TurnCommand = MotionCommand.TurnRight;

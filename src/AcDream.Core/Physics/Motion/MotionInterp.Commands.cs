@@ -11,7 +11,7 @@ public sealed partial class MotionInterp
     /// the result (<see cref="DoInterpretedMotion"/>) and records the command in the raw state.
     /// </summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number (nothing recorded).</returns>
-    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::DoMotion (acclient.c:344599)
     public int DoMotion(uint motion, in MovementParameters p)
     {
@@ -71,7 +71,7 @@ public sealed partial class MotionInterp
     /// <summary>Stops a command as the player gives it: converts it as <see cref="DoMotion"/> does, stops the result and
     /// removes the command from the raw state.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::StopMotion (acclient.c:344080)
     public int StopMotion(uint motion, in MovementParameters p)
     {
@@ -106,7 +106,7 @@ public sealed partial class MotionInterp
     /// long jump charges, a walk, run or side-step) it is only recorded; an action in the air fails with 0x24.
     /// </summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::DoInterpretedMotion (acclient.c:343974)
     public int DoInterpretedMotion(uint motion, in MovementParameters p)
     {
@@ -188,7 +188,7 @@ public sealed partial class MotionInterp
     /// <summary>Stops an interpreted motion: through the motion table when it may move (queueing a Ready), otherwise only
     /// in the interpreted state.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::StopInterpretedMotion (acclient.c:344033)
     public int StopInterpretedMotion(uint motion, in MovementParameters p)
     {

@@ -114,9 +114,14 @@ public sealed partial class MotionInterp
     /// forward motion, 0x47 when the weenie refuses the stamina cost; else 0 with the cost in
     /// <paramref name="staminaCost"/> (0 with no weenie).
     /// </summary>
+    /// <param name="extent">The jump's charge, 0..1 (the power bar's level).</param>
+    /// <param name="staminaCost">The stamina the jump costs (the weenie's <see cref="IMotionWeenie.JumpStaminaCost"/>).</param>
+    /// <exception cref="System.ArgumentException"><paramref name="extent"/> is NaN or infinite.</exception>
+    /// <exception cref="System.ArgumentOutOfRangeException"><paramref name="extent"/> is outside [0, 1].</exception>
     // retail: CMotionInterp::jump_is_allowed (acclient.c:343921)
     public int JumpIsAllowed(float extent, out int staminaCost)
     {
+        CheckJumpExtent(extent);
         staminaCost = 0;
         PhysicsObj? obj = _physicsObj;
         if (obj is null
@@ -156,14 +161,18 @@ public sealed partial class MotionInterp
     /// otherwise ends a standing long jump.
     /// </summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <param name="extent">The jump's charge, 0..1: the power bar's level, as retail's only caller
+    /// (<c>ClientCombatSystem::DoJump</c>) passes it. The launch speed (<see cref="GetJumpVZ"/>) and the stamina cost
+    /// (<see cref="IMotionWeenie.JumpStaminaCost"/>) both come from it.</param>
+    /// <param name="staminaCost">The stamina the jump costs (0 with no weenie or when refused).</param>
     /// <exception cref="System.ArgumentException"><paramref name="extent"/> is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentOutOfRangeException"><paramref name="extent"/> is outside [0, 1] (nothing changes):
+    /// retail's launch speed clamps the extent to 1 but its stamina cost does not, so a larger extent would jump as 1 and
+    /// cost more.</exception>
     // retail: CMotionInterp::jump (acclient.c:344223)
     public int Jump(float extent, out int staminaCost)
     {
-        if (!float.IsFinite(extent))
-        {
-            throw new System.ArgumentException("The jump extent must be finite.", nameof(extent));
-        }
+        CheckJumpExtent(extent);
 
         staminaCost = 0;
         PhysicsObj? obj = _physicsObj;
@@ -184,6 +193,22 @@ public sealed partial class MotionInterp
         JumpExtent = extent;
         obj.SetOnWalkable(false);
         return result;
+    }
+
+    // non-retail: the extent is checked at the public entry. Retail's caller only passes the power bar's level (0..1);
+    // get_jump_v_z clamps to 1 but JumpStaminaCost does not, so an extent above 1 would jump as 1 and cost as given.
+    private static void CheckJumpExtent(float extent)
+    {
+        if (!float.IsFinite(extent))
+        {
+            throw new System.ArgumentException("The jump extent must be finite.", nameof(extent));
+        }
+
+        if (extent < 0f || extent > 1f)
+        {
+            throw new System.ArgumentOutOfRangeException(nameof(extent), extent,
+                "The jump extent is the power bar's level, 0..1 (a larger extent would jump as 1 and cost stamina as given).");
+        }
     }
 
     /// <summary>

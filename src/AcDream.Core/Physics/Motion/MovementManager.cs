@@ -107,7 +107,7 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Starts a command as the player gives it (<see cref="MotionInterp.DoMotion"/>), then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     /// <remarks>The object's <see cref="Objects.PhysicsObj.LastMoveWasAutonomous"/> becomes true first, as
     /// <c>CPhysicsObj::DoMotion</c> (acclient.c:317314) sets it: this client's own commands.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 1 -> CMotionInterp::PerformMovement (acclient.c:344669)
@@ -123,7 +123,7 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Starts an interpreted motion (<see cref="MotionInterp.DoInterpretedMotion"/>), then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 2
     public int DoInterpretedMotion(uint motion, in MovementParameters p)
     {
@@ -136,7 +136,7 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Stops a command as the player gives it (<see cref="MotionInterp.StopMotion"/>), then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     /// <remarks>Marks the move autonomous first, as <c>CPhysicsObj::StopMotion</c> (acclient.c:317353) does.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 3
     public int StopMotion(uint motion, in MovementParameters p)
@@ -151,7 +151,7 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Stops an interpreted motion, then takes the finished motions.</summary>
     /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 4
     public int StopInterpretedMotion(uint motion, in MovementParameters p)
     {

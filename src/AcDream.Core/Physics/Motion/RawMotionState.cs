@@ -103,9 +103,12 @@ public sealed class RawMotionState
     }
 
     /// <summary>Records a started command with its hold key (none when the parameters set the hold key).</summary>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed
+    /// is NaN or infinite (state unchanged).</exception>
     // retail: RawMotionState::ApplyMotion (acclient.c:332851)
     public void ApplyMotion(uint motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         HoldKey key = p.Has(MovementParameterFlags.SetHoldKey) ? HoldKey.Invalid : p.HoldKeyToApply;
         switch (motion)
         {

@@ -10,7 +10,8 @@ public sealed partial class PhysicsObj
 
     /// <summary>
     /// What keeps this object from walking, stepping and colliding as a retail creature would: <see cref="ObjectSetupIssues.None"/>
-    /// for a creature built from a Setup (<see cref="SimplePartArray(SetupPhysics, int)"/>), with a movement manager, entered
+    /// for a creature built from a Setup (<see cref="SimplePartArray(SetupPhysics, int)"/>) with a motion table, with a movement
+    /// manager, entered
     /// into a world over terrain. Cheap; not part of the tick. Check it once after creating an object — an issue is otherwise
     /// silent (the object simply does not move, or moves at half speed).
     /// </summary>
@@ -29,6 +30,11 @@ public sealed partial class PhysicsObj
                 if (parts.NumSpheres == 0)
                 {
                     issues |= ObjectSetupIssues.NoCollisionSpheres;
+                }
+
+                if (parts.MotionTable is null && MovementManager is null or Motion.MovementManager)
+                {
+                    issues |= ObjectSetupIssues.NoMotionTable;
                 }
 
                 if (parts.StepUpHeight <= NoSetupStepHeight || parts.StepDownHeight <= NoSetupStepHeight)
