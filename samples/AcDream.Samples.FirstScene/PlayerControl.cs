@@ -42,7 +42,7 @@ internal sealed class PlayerControl
         }
 
         _mm = MovementManager.Of(player);
-        _mi = _mm.GetMinterp();
+        _mi = _mm.GetOrCreateMotionInterpreter();
     }
 
     /// <summary>The commanded velocity in the player's local axes (+Y forward), m/s.</summary>
@@ -86,8 +86,8 @@ internal sealed class PlayerControl
         if (!_jumped)
         {
             _jumped = true;
-            int err = _mi.Jump(JumpExtent, out _);                // jump key up: 0 = jumped, the launch comes at LeaveGround
-            return err == 0 ? "jump" : $"jump refused ({err})";
+            MotionError err = _mi.Jump(JumpExtent, out _);        // jump key up: None = jumped, the launch comes at LeaveGround
+            return err == MotionError.None ? "jump" : $"jump refused ({err})";
         }
 
         if (t < 12.5)
@@ -118,7 +118,7 @@ internal sealed class PlayerControl
         if (run != _run)
         {
             _run = run;
-            _mi.SetHoldRun(run, false);
+            _mi.SetHoldRun(run, cancelMoveToOnChange: false);
         }
 
         Key(ref _forward, forward, MotionCommand.WalkForward);
@@ -126,7 +126,7 @@ internal sealed class PlayerControl
         Key(ref _turnLeft, turnLeft, MotionCommand.TurnLeft);
     }
 
-    private void Key(ref bool down, bool wanted, uint command)
+    private void Key(ref bool down, bool wanted, MotionCommand command)
     {
         if (down == wanted)
         {

@@ -33,7 +33,7 @@ public class MotionAllocationTests
         Assert.True(remote.EnterWorld(new Position(cell, new Vector3(90f, 90f, 20f))));
 
         MovementManager mm = MovementManager.Of(player);
-        MotionInterp mi = mm.GetMinterp();
+        MotionInterp mi = mm.GetOrCreateMotionInterpreter();
         var walk = new MovementParameters { HoldKeyToApply = HoldKey.Run };
         var turn = new MovementParameters();
         var run = new InterpretedMotionState { ForwardCommand = MotionCommand.RunForward, ForwardSpeed = 2.375f,

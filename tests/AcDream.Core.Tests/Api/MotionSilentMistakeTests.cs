@@ -43,7 +43,7 @@ public sealed class MotionSilentMistakeTests
         Assert.Equal(System.Numerics.Vector3.Zero, table.Velocity);
 
         // new MovementParameters() is retail's defaults and walks: 3.12 m/s at speed 1.
-        Assert.Equal(0, (int)mm.DoMotion(MotionCommand.WalkForward, new MovementParameters()));
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, new MovementParameters()));
         Assert.Equal(3.12f, table.Velocity.Y);
     }
 
@@ -53,9 +53,9 @@ public sealed class MotionSilentMistakeTests
         // Zero speed or no flags alone are legal values (a caller may stop a motion at speed 0, or ask for no state
         // change): only all fields zero is refused.
         var (_, mm, _, _) = MotionFixture.Create(new PlayerWeenie());
-        Assert.Equal(0, (int)mm.DoMotion(MotionCommand.WalkForward, new MovementParameters { Speed = 0f }));
-        Assert.Equal(0, (int)mm.DoMotion(MotionCommand.WalkForward, new MovementParameters { Speed = 0.5f, Flags = 0 }));
-        Assert.Equal(0, (int)mm.DoMotion(MotionCommand.WalkForward, default(MovementParameters) with { Speed = 1f }));
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, new MovementParameters { Speed = 0f }));
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, new MovementParameters { Speed = 0.5f, Flags = 0 }));
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, default(MovementParameters) with { Speed = 1f }));
     }
 
     private static void AssertRefused(Action a)
@@ -81,13 +81,13 @@ public sealed class MotionSilentMistakeTests
         PhysicsObj with = world.CreateObject(2);
         with.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
         Assert.True(with.EnterWorld(SyntheticTerrain.OnGround(terrain, SyntheticTerrain.CellId(0x80, 0x80, 4, 4), 110f, 100f)));
-        with.GetMinterp();
+        with.GetOrCreateMotionInterpreter();
         Assert.Equal(ObjectSetupIssues.None, with.SetupIssues);
 
         // A client's own movement manager drives the body itself: no motion table is needed.
         PhysicsObj own = world.CreateObject(3);
         own.PartArray = new SimplePartArray(SetupPhysics.Human);
-        own.MovementManager = new BasicMovementManager();
+        own.Movement = new BasicMovementManager();
         Assert.True(own.EnterWorld(SyntheticTerrain.OnGround(terrain, SyntheticTerrain.CellId(0x80, 0x80, 4, 4), 120f, 100f)));
         Assert.Equal(ObjectSetupIssues.None, own.SetupIssues);
     }
@@ -119,7 +119,7 @@ public sealed class MotionSilentMistakeTests
     {
         var (obj, _, mi, _) = MotionFixture.Create(new PlayerWeenie { JumpSkill = 100, Strength = 100 }, gravity: true);
         MotionFixture.SetOnGround(obj);
-        Assert.Equal(0, mi.Jump(extent, out int charged));
+        Assert.Equal(MotionError.None, mi.Jump(extent, out int charged));
         Assert.Equal(cost, charged);
     }
 }

@@ -100,7 +100,7 @@ public sealed class StickyManager
         }
 
         double speed = 0.0;
-        IMotionInterpreter? minterp = obj.GetMinterp();
+        IMotionInterpreter? minterp = obj.GetOrCreateMotionInterpreter();
         if (minterp is not null)
         {
             speed = minterp.GetMaxSpeed() * SpeedMultiplier;

@@ -21,7 +21,7 @@ public enum ObjectSetupIssues
     NoCollisionSpheres = 1 << 1,
 
     /// <summary>No movement manager: at rest on walkable ground the object deactivates itself every other step (walking at
-    /// half speed). <see cref="PhysicsObj.GetMinterp"/> creates one; the world's player gets one when it is set.</summary>
+    /// half speed). <see cref="PhysicsObj.GetOrCreateMotionInterpreter"/> creates one; the world's player gets one when it is set.</summary>
     NoMovementManager = 1 << 2,
 
     /// <summary>Step-up or step-down height at or below 0.01 m, retail's value for an object without a Setup: the object

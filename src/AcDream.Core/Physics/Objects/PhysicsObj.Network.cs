@@ -96,7 +96,7 @@ public sealed partial class PhysicsObj
     public void TeleportHook()
     {
         Touch();
-        MovementManager?.CancelMoveTo(0x3Cu);
+        Movement?.CancelMoveTo(0x3Cu);
         PositionManager?.UnStick();
         PositionManager?.StopInterpolating();
         PositionManager?.UnConstrain();

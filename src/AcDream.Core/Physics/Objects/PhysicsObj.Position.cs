@@ -190,7 +190,7 @@ public sealed partial class PhysicsObj
         }
 
         PartArray?.HandleEnterWorld();
-        MovementManager?.HandleEnterWorld();
+        Movement?.HandleEnterWorld();
         return true;
     }
 
@@ -281,7 +281,7 @@ public sealed partial class PhysicsObj
             _transientState &= ~TransientState.OnWalkable;
             if (wasOnWalkable)
             {
-                MovementManager?.LeaveGround();
+                Movement?.LeaveGround();
             }
 
             CalcAcceleration();

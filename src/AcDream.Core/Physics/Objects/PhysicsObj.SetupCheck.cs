@@ -32,7 +32,7 @@ public sealed partial class PhysicsObj
                     issues |= ObjectSetupIssues.NoCollisionSpheres;
                 }
 
-                if (parts.MotionTable is null && MovementManager is null or Motion.MovementManager)
+                if (parts.MotionTable is null && Movement is null or Motion.MovementManager)
                 {
                     issues |= ObjectSetupIssues.NoMotionTable;
                 }
@@ -43,7 +43,7 @@ public sealed partial class PhysicsObj
                 }
             }
 
-            if (MovementManager is null)
+            if (Movement is null)
             {
                 issues |= ObjectSetupIssues.NoMovementManager;
             }

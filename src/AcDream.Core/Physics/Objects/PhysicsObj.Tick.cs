@@ -143,7 +143,7 @@ public sealed partial class PhysicsObj
             else
             {
                 // No collision spheres: retail keeps the origin and takes only the new orientation.
-                if (MovementManager is null && (_transientState & TransientState.OnWalkable) != 0)
+                if (Movement is null && (_transientState & TransientState.OnWalkable) != 0)
                 {
                     _transientState &= ~TransientState.Active;
                 }
@@ -159,7 +159,7 @@ public sealed partial class PhysicsObj
             {
                 DetectionManager?.CheckDetection();
                 TargetManager?.HandleTargetting();
-                MovementManager?.UseTime();
+                Movement?.UseTime();
                 HandlePartArrayMovement();
             }
 

@@ -13,7 +13,7 @@ public class MotionInterpVelocityTests
     public void Walk_StateVelocityIs312_AndTheTableWalks()
     {
         var (_, mm, mi, table) = MotionFixture.Create(new PlayerWeenie { RunSkill = 200 });
-        Assert.Equal(0, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params()));
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params()));
         // No hold key: WalkForward at speed 1; y = (float)(3.12f * 1.0) = 3.12f.
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(1f, mi.InterpretedState.ForwardSpeed);
@@ -28,7 +28,7 @@ public class MotionInterpVelocityTests
         // Run skill 0: GetRunRate = (0 + 4) / 4 = 1. WalkForward with the run key -> RunForward at 1 * 1 = 1; y = 4 * 1 = 4;
         // the clamp is 4 * rate = 4 (not exceeded).
         var (_, mm, mi, table) = MotionFixture.Create(new PlayerWeenie { RunSkill = 0 });
-        Assert.Equal(0, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params(1f, HoldKey.Run)));
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params(1f, HoldKey.Run)));
         Assert.Equal(MotionCommand.RunForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(1f, mi.InterpretedState.ForwardSpeed);
         Assert.Equal(new Vector3(0f, 4f, 0f), mi.GetStateVelocity());
@@ -168,7 +168,7 @@ public class MotionInterpVelocityTests
     {
         var (_, mm, mi, table) = MotionFixture.Create(new PlayerWeenie { RunSkill = 200 });
         mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params());
-        Assert.Equal(0, mm.StopMotion(MotionCommand.WalkForward, MotionFixture.Params()));
+        Assert.Equal(MotionError.None, mm.StopMotion(MotionCommand.WalkForward, MotionFixture.Params()));
         Assert.Equal(MotionCommand.Ready, mi.InterpretedState.ForwardCommand);
         Assert.Equal(MotionCommand.Ready, mi.RawState.ForwardCommand);
         Assert.Equal(Vector3.Zero, table.Velocity);
