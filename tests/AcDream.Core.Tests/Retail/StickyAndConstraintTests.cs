@@ -117,7 +117,7 @@ public class StickyAndConstraintTests
         s.Managers.UseTime();
         Assert.Equal(0u, s.Creature.GetStickyObjectId());
         Assert.Equal(1, tracker.Clears);
-        Assert.Equal(0x36u, motion.LastCancel);
+        Assert.Equal(AcDream.Core.Physics.Motion.MotionError.ActionCancelled, motion.LastCancel);   // 0x36
     }
 
     [Fact]

@@ -30,6 +30,12 @@ public enum MotionError : uint
     /// <summary>Chat emotes are refused outside the non-combat style (0x42).</summary>
     CantChatEmoteInCombat = 0x42,
 
+    /// <summary>The action was cancelled: the error a move-to is cancelled with when the object unsticks (0x36).</summary>
+    ActionCancelled = 0x36,
+
+    /// <summary>The object teleported: the error a move-to is cancelled with on a teleport (0x3C).</summary>
+    ITeleported = 0x3C,
+
     /// <summary>Six actions are already queued (0x45).</summary>
     TooManyActions = 0x45,
 

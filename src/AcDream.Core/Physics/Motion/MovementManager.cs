@@ -233,5 +233,5 @@ public sealed class MovementManager : IMovementManager
 
     /// <inheritdoc />
     // retail: MovementManager::CancelMoveTo (acclient.c:339239)
-    void IMovementManager.CancelMoveTo(uint error) => MoveToManager?.CancelMoveTo(error);
+    void IMovementManager.CancelMoveTo(MotionError error) => MoveToManager?.CancelMoveTo(error);
 }

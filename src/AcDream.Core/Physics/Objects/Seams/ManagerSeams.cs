@@ -31,8 +31,9 @@ public interface IMovementManager
     /// <see cref="MotionInterpreter"/>.</summary>
     IMotionInterpreter? GetOrCreateMotionInterpreter() => MotionInterpreter;
 
-    /// <summary>Cancels a move-to with a weenie error code (retail <c>MovementManager::CancelMoveTo</c>; teleport uses 0x3C).</summary>
-    void CancelMoveTo(uint error)
+    /// <summary>Cancels a move-to with a weenie error (retail <c>MovementManager::CancelMoveTo</c>; a teleport gives
+    /// <see cref="Motion.MotionError.ITeleported"/>, an unstick <see cref="Motion.MotionError.ActionCancelled"/>).</summary>
+    void CancelMoveTo(Motion.MotionError error)
     {
     }
 
