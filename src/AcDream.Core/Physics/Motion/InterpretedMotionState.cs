@@ -165,4 +165,11 @@ public sealed class InterpretedMotionState
     /// <summary>Number of queued actions.</summary>
     // retail: InterpretedMotionState::GetNumActions (acclient.c:332814)
     public int GetNumActions() => Actions.Count;
+
+    /// <summary>The state's commands by name (an unnamed one as its hex id), their speeds and the number of queued actions.</summary>
+    public override string ToString() => string.Create(System.Globalization.CultureInfo.InvariantCulture,
+        $"InterpretedMotionState {{ CurrentStyle = {MotionCommandText.Format(CurrentStyle)}, "
+        + $"ForwardCommand = {MotionCommandText.Format(ForwardCommand)}, ForwardSpeed = {ForwardSpeed}, "
+        + $"SidestepCommand = {MotionCommandText.Format(SidestepCommand)}, SidestepSpeed = {SidestepSpeed}, "
+        + $"TurnCommand = {MotionCommandText.Format(TurnCommand)}, TurnSpeed = {TurnSpeed}, Actions = {Actions.Count} }}");
 }

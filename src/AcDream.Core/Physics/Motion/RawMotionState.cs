@@ -191,4 +191,11 @@ public sealed class RawMotionState
     /// <summary>Removes the oldest action and returns its command (<see cref="MotionCommand.None"/> when none).</summary>
     // retail: RawMotionState::RemoveAction (acclient.c:332615)
     public MotionCommand RemoveAction() => Actions.RemoveFirst();
+
+    /// <summary>The state's commands by name (an unnamed one as its hex id), their speeds and the number of queued actions.</summary>
+    public override string ToString() => string.Create(System.Globalization.CultureInfo.InvariantCulture,
+        $"RawMotionState {{ CurrentHoldKey = {CurrentHoldKey}, CurrentStyle = {MotionCommandText.Format(CurrentStyle)}, "
+        + $"ForwardCommand = {MotionCommandText.Format(ForwardCommand)}, ForwardSpeed = {ForwardSpeed}, "
+        + $"SidestepCommand = {MotionCommandText.Format(SidestepCommand)}, SidestepSpeed = {SidestepSpeed}, "
+        + $"TurnCommand = {MotionCommandText.Format(TurnCommand)}, TurnSpeed = {TurnSpeed}, Actions = {Actions.Count} }}");
 }
