@@ -51,9 +51,9 @@ public class MotionInterpBenchmarks
     [Benchmark(OperationsPerInvoke = 2)]
     public void HoldRunToggle()
     {
-        _mi.SetHoldRun(false, false);
+        _mi.SetHoldRun(false, cancelMoveToOnChange: false);
         _player.CheckForCompletedMotions();
-        _mi.SetHoldRun(true, false);
+        _mi.SetHoldRun(true, cancelMoveToOnChange: false);
         _player.CheckForCompletedMotions();
     }
 

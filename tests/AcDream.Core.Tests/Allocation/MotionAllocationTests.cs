@@ -45,7 +45,7 @@ public class MotionAllocationTests
             {
                 mm.DoMotion(MotionCommand.WalkForward, walk);
                 mm.DoMotion(MotionCommand.TurnRight, turn);
-                mi.SetHoldRun(i % 2 == 0, false);
+                mi.SetHoldRun(i % 2 == 0, cancelMoveToOnChange: false);
                 MovementEvent.ApplyInterpretedMotion(remote, i % 3 == 0 ? stop : run);
                 world.Tick(world.CurrentTime + 1.0 / 30.0);
             }

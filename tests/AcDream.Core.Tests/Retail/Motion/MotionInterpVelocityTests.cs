@@ -145,7 +145,7 @@ public class MotionInterpVelocityTests
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
 
         // set_hold_run(1): the raw WalkForward is re-interpreted with the run key: RunForward at 2.375; y = 9.5.
-        mi.SetHoldRun(true, false);
+        mi.SetHoldRun(true, cancelMoveToOnChange: false);
         Assert.Equal(HoldKey.Run, mi.RawState.CurrentHoldKey);
         Assert.Equal(MotionCommand.RunForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(2.375f, mi.InterpretedState.ForwardSpeed);
@@ -153,10 +153,10 @@ public class MotionInterpVelocityTests
         Assert.Equal(2.375f, mi.MyRunRate);   // apply_interpreted_movement records a run's speed
 
         int pending = mi.PendingMotions.Count;
-        mi.SetHoldRun(true, false);           // no change: nothing re-applied
+        mi.SetHoldRun(true, cancelMoveToOnChange: false);           // no change: nothing re-applied
         Assert.Equal(pending, mi.PendingMotions.Count);
 
-        mi.SetHoldRun(false, false);
+        mi.SetHoldRun(false, cancelMoveToOnChange: false);
         Assert.Equal(HoldKey.None, mi.RawState.CurrentHoldKey);
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(1f, mi.InterpretedState.ForwardSpeed);
