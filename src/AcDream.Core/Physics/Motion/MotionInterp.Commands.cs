@@ -111,6 +111,14 @@ public sealed partial class MotionInterp
     public MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
+        return DoInterpretedMotionUnchecked(motion, p);
+    }
+
+    // The body of DoInterpretedMotion, for apply_interpreted_movement: its parameters are retail's defaults with the interpreted
+    // state's speeds (finite by their setters), so the tick's path runs no argument check.
+    // retail: CMotionInterp::DoInterpretedMotion (acclient.c:343974)
+    private MotionError DoInterpretedMotionUnchecked(MotionCommand motion, in MovementParameters p)
+    {
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
         {
@@ -193,6 +201,14 @@ public sealed partial class MotionInterp
     public MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
+        return StopInterpretedMotionUnchecked(motion, p);
+    }
+
+    // The body of StopInterpretedMotion, for apply_interpreted_movement: its parameters are retail's defaults with the interpreted
+    // state's speeds (finite by their setters), so the tick's path runs no argument check.
+    // retail: CMotionInterp::StopInterpretedMotion (acclient.c:344033)
+    private MotionError StopInterpretedMotionUnchecked(MotionCommand motion, in MovementParameters p)
+    {
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
         {
@@ -409,42 +425,42 @@ public sealed partial class MotionInterp
             MyRunRate = s.ForwardSpeed;
         }
 
-        DoInterpretedMotion(s.CurrentStyle, p);
+        DoInterpretedMotionUnchecked(s.CurrentStyle, p);
         if (ContactAllowsMove(s.ForwardCommand))
         {
             if (StandingLongJump)
             {
                 p.Speed = 1f;
-                DoInterpretedMotion(MotionCommand.Ready, p);
-                StopInterpretedMotion(MotionCommand.SideStepRight, p);
+                DoInterpretedMotionUnchecked(MotionCommand.Ready, p);
+                StopInterpretedMotionUnchecked(MotionCommand.SideStepRight, p);
             }
             else
             {
                 p.Speed = s.ForwardSpeed;
-                DoInterpretedMotion(s.ForwardCommand, p);
+                DoInterpretedMotionUnchecked(s.ForwardCommand, p);
                 MotionCommand side = s.SidestepCommand;
                 if (side != MotionCommand.None)
                 {
                     p.Speed = s.SidestepSpeed;
-                    DoInterpretedMotion(side, p);
+                    DoInterpretedMotionUnchecked(side, p);
                 }
                 else
                 {
-                    StopInterpretedMotion(MotionCommand.SideStepRight, p);
+                    StopInterpretedMotionUnchecked(MotionCommand.SideStepRight, p);
                 }
             }
         }
         else
         {
             p.Speed = 1f;
-            DoInterpretedMotion(MotionCommand.Falling, p);
+            DoInterpretedMotionUnchecked(MotionCommand.Falling, p);
         }
 
         MotionCommand turn = s.TurnCommand;
         if (turn != MotionCommand.None)
         {
             p.Speed = s.TurnSpeed;
-            DoInterpretedMotion(turn, p);
+            DoInterpretedMotionUnchecked(turn, p);
         }
         else
         {
