@@ -40,6 +40,18 @@ public sealed class MotionNamesTests
     }
 
     [Fact]
+    public void MovementParameters_PrintTheirFieldsByName()
+    {
+        // Retail's defaults (acclient.c:339436): flags 0x1EE0F = 0xF (walk, run, side-step, backwards) | 0x200 (towards) |
+        // 0x400 (spheres) | 0x800 (set hold key) | 0x2000 | 0x4000 (modify raw, interpreted) | 0x8000 (cancel move-to) |
+        // 0x10000 (stop completely); speed 1, hold key Invalid, distance to object 0.6 (0.6f prints as 0.6).
+        string text = new MovementParameters().ToString();
+        Assert.StartsWith("MovementParameters { Flags = CanWalk, CanRun, CanSidestep, CanWalkBackwards, MoveTowards, UseSpheres, "
+                          + "SetHoldKey, ModifyRawState, ModifyInterpretedState, CancelMoveTo, StopCompletely, Speed = 1, "
+                          + "HoldKeyToApply = Invalid, DistanceToObject = 0.6, ", text);
+    }
+
+    [Fact]
     public void CommandIds_GiveTheEnumsMembers()
     {
         Assert.True(MotionCommandIds.TryGet(0x3D, out MotionCommand style));

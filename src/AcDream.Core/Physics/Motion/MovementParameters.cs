@@ -130,5 +130,12 @@ public struct MovementParameters
         && Speed == 0f && FailDistance == 0f && WalkRunThreshold == 0f && ContextId == 0 && HoldKeyToApply == HoldKey.Invalid
         && ActionStamp == 0;
 
+    /// <summary>Every field by name (the flags by their names).</summary>
+    public readonly override string ToString() => string.Create(System.Globalization.CultureInfo.InvariantCulture,
+        $"MovementParameters {{ Flags = {Flags}, Speed = {Speed}, HoldKeyToApply = {HoldKeyToApply}, "
+        + $"DistanceToObject = {DistanceToObject}, MinDistance = {MinDistance}, DesiredHeading = {DesiredHeading}, "
+        + $"FailDistance = {FailDistance}, WalkRunThreshold = {WalkRunThreshold}, ContextId = {ContextId}, "
+        + $"ActionStamp = {ActionStamp} }}");
+
     internal readonly bool Has(MovementParameterFlags f) => (Flags & f) != 0;
 }
