@@ -155,7 +155,7 @@ internal sealed class HoltburgCrowd
             parts.SequenceVelocity = new Vector3(0f, 3.12f, 0f);
             parts.SequenceOmega = new Vector3(0f, 0f, 0.5f);
             obj.PartArray = parts;
-            obj.MovementManager = new BasicMovementManager();
+            obj.Movement = new BasicMovementManager();
             if (obj.EnterWorld(p))
             {
                 placed++;

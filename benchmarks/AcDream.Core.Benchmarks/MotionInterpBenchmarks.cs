@@ -37,7 +37,7 @@ public class MotionInterpBenchmarks
         _player.EnterWorld(new Position(SyntheticTerrain.CellId(0x80, 0x80, 4, 4), new Vector3(96f, 90f, 20f)));
         _world.Player = _player;
         MovementManager mm = MovementManager.Of(_player);
-        _mi = mm.GetMinterp();
+        _mi = mm.GetOrCreateMotionInterpreter();
         mm.DoMotion(MotionCommand.WalkForward, new MovementParameters { HoldKeyToApply = HoldKey.Run });
         mm.DoMotion(MotionCommand.TurnRight, new MovementParameters());
         _now = 0.0;
@@ -51,9 +51,9 @@ public class MotionInterpBenchmarks
     [Benchmark(OperationsPerInvoke = 2)]
     public void HoldRunToggle()
     {
-        _mi.SetHoldRun(false, false);
+        _mi.SetHoldRun(false, cancelMoveToOnChange: false);
         _player.CheckForCompletedMotions();
-        _mi.SetHoldRun(true, false);
+        _mi.SetHoldRun(true, cancelMoveToOnChange: false);
         _player.CheckForCompletedMotions();
     }
 

@@ -48,7 +48,7 @@ public class RemoteSmoothingBenchmarks
         {
             PhysicsObj c = _world.CreateObject((uint)(i + 2));
             c.PartArray = new SimplePartArray(1, 1) { Radius = 0.5f, Height = 1.8f, SequenceVelocity = new Vector3(0f, 2f, 0f) };
-            c.MovementManager = new BasicMovementManager();
+            c.Movement = new BasicMovementManager();
             var p = new Position(0x80800001u, new Vector3(66f + (i % 32) * 2f, 66f + (i / 32) * 2f, 0f));
             p.TryAdjustToOutside();
             c.EnterWorld(p);

@@ -170,7 +170,7 @@ public class SceneEffectsBenchmarks
             Position p = SceneBench.At(40f + (i % 40) * 1.5f, 40f + (i / 40) * 2f);
             PhysicsObj c = SceneBench.Item(_world, (uint)(100 + i), p);
             ((SimplePartArray)c.PartArray!).SequenceVelocity = new Vector3(0f, 1f, 0f);
-            c.GetMinterp();
+            c.GetOrCreateMotionInterpreter();
             _creatures[i] = c;
             _targets[i] = p;
         }
@@ -243,7 +243,7 @@ internal static class SceneBench
     public static PhysicsObj Mover(PhysicsWorld w, uint id, Position p)
     {
         PhysicsObj o = Item(w, id, p);
-        o.GetMinterp();
+        o.GetOrCreateMotionInterpreter();
         ((SimplePartArray)o.PartArray!).SequenceVelocity = new Vector3(0f, 2f, 0f);
         return o;
     }

@@ -30,15 +30,19 @@ internal sealed class PlayerControl
     private bool _charging;
     private bool _jumped;
 
-    /// <summary>Prepares <paramref name="player"/> (already the world's player, its weenie set): the retail motion table speeds
-    /// on its part array, and its movement manager.</summary>
+    /// <summary>Prepares <paramref name="player"/> (already the world's player, its weenie set, its part array's motion table
+    /// <paramref name="body"/>'s): its movement manager and motion interpreter.</summary>
     public PlayerControl(PhysicsObj player, SimplePartArray body)
     {
         ArgumentNullException.ThrowIfNull(player);
         ArgumentNullException.ThrowIfNull(body);
-        body.MotionTable = new RetailSpeedMotionTable();   // a client with real motion tables plugs its own in here
+        if (body.MotionTable is null)
+        {
+            throw new ArgumentException("The player's part array needs a motion table.", nameof(body));
+        }
+
         _mm = MovementManager.Of(player);
-        _mi = _mm.GetMinterp();
+        _mi = _mm.GetOrCreateMotionInterpreter();
     }
 
     /// <summary>The commanded velocity in the player's local axes (+Y forward), m/s.</summary>
@@ -82,8 +86,8 @@ internal sealed class PlayerControl
         if (!_jumped)
         {
             _jumped = true;
-            int err = _mi.Jump(JumpExtent, out _);                // jump key up: 0 = jumped, the launch comes at LeaveGround
-            return err == 0 ? "jump" : $"jump refused ({err})";
+            MotionError err = _mi.Jump(JumpExtent, out _);        // jump key up: None = jumped, the launch comes at LeaveGround
+            return err == MotionError.None ? "jump" : $"jump refused ({err})";
         }
 
         if (t < 12.5)
@@ -114,7 +118,7 @@ internal sealed class PlayerControl
         if (run != _run)
         {
             _run = run;
-            _mi.SetHoldRun(run, false);
+            _mi.SetHoldRun(run, cancelMoveToOnChange: false);
         }
 
         Key(ref _forward, forward, MotionCommand.WalkForward);
@@ -122,7 +126,7 @@ internal sealed class PlayerControl
         Key(ref _turnLeft, turnLeft, MotionCommand.TurnLeft);
     }
 
-    private void Key(ref bool down, bool wanted, uint command)
+    private void Key(ref bool down, bool wanted, MotionCommand command)
     {
         if (down == wanted)
         {

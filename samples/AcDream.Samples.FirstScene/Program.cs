@@ -2,6 +2,7 @@ using System;
 using System.Globalization;
 using System.IO;
 using System.Numerics;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
@@ -64,7 +65,9 @@ public static class Program
         //    made the world's player (which gives it retail's movement manager and motion interpreter). SetupIssues names
         //    anything that would keep it from walking.
         PhysicsObj player = world.CreateObject(0x50000001);
-        var body = new SimplePartArray(SetupPhysics.Human);
+        // The motion table turns motion commands into root motion: without one the player would not walk (SetupIssues says
+        // NoMotionTable). A client with real motion tables plugs its own in here.
+        var body = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
         player.PartArray = body;
         player.Weenie = PlayerControl.Character();
         if (!player.EnterWorld(Scene.OnGround(terrain, 60f, 40f, heading: 0f)))

@@ -122,7 +122,7 @@ public class LongRunAllocationTests
         private PhysicsObj Mover(uint id, float x, float y)
         {
             PhysicsObj o = Item(id, x, y);
-            o.GetMinterp();
+            o.GetOrCreateMotionInterpreter();
             ((SimplePartArray)o.PartArray!).SequenceVelocity = new Vector3(0f, 2f, 0f);
             return o;
         }

@@ -33,7 +33,7 @@ public class MotionAllocationTests
         Assert.True(remote.EnterWorld(new Position(cell, new Vector3(90f, 90f, 20f))));
 
         MovementManager mm = MovementManager.Of(player);
-        MotionInterp mi = mm.GetMinterp();
+        MotionInterp mi = mm.GetOrCreateMotionInterpreter();
         var walk = new MovementParameters { HoldKeyToApply = HoldKey.Run };
         var turn = new MovementParameters();
         var run = new InterpretedMotionState { ForwardCommand = MotionCommand.RunForward, ForwardSpeed = 2.375f,
@@ -45,7 +45,7 @@ public class MotionAllocationTests
             {
                 mm.DoMotion(MotionCommand.WalkForward, walk);
                 mm.DoMotion(MotionCommand.TurnRight, turn);
-                mi.SetHoldRun(i % 2 == 0, false);
+                mi.SetHoldRun(i % 2 == 0, cancelMoveToOnChange: false);
                 MovementEvent.ApplyInterpretedMotion(remote, i % 3 == 0 ? stop : run);
                 world.Tick(world.CurrentTime + 1.0 / 30.0);
             }

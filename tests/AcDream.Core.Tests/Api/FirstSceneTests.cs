@@ -102,7 +102,7 @@ public sealed class FirstSceneTests
         TerrainWorld terrain = Flat();
         var world = new PhysicsWorld(terrain);
         PhysicsObj player = world.CreateObject(1);
-        player.PartArray = new SimplePartArray(SetupPhysics.Human);
+        player.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
         Assert.True(player.EnterWorld(Spawn(terrain)));
         world.Player = player;
         for (int k = 1; k <= 20; k++)
@@ -127,7 +127,7 @@ public sealed class FirstSceneTests
         player.PartArray = body;
         Assert.True(player.EnterWorld(Spawn(terrain)));
         world.Player = player;
-        Assert.IsType<MovementManager>(player.MovementManager);   // the retail movement manager (Physics/Motion)
+        Assert.IsType<MovementManager>(player.Movement);   // the retail movement manager (Physics/Motion)
         body.SequenceVelocity = new Vector3(0f, 3f, 0f);
         for (int k = 1; k <= 20; k++)
         {
@@ -158,7 +158,7 @@ public sealed class FirstSceneTests
         var body = new SimplePartArray(SetupPhysics.Human);
         creature.PartArray = body;
         Assert.True(creature.EnterWorld(Spawn(terrain)));
-        Assert.Equal(ObjectSetupIssues.NoMovementManager, creature.SetupIssues);
+        Assert.Equal(ObjectSetupIssues.NoMovementManager | ObjectSetupIssues.NoMotionTable, creature.SetupIssues);
         body.SequenceVelocity = new Vector3(0f, 3f, 0f);
         for (int k = 1; k <= 20; k++)
         {
@@ -176,14 +176,14 @@ public sealed class FirstSceneTests
         world.MovementManagerFactory = new Factory(made);
         PhysicsObj player = world.CreateObject(1);
         world.Player = player;
-        Assert.Same(made, player.MovementManager);
+        Assert.Same(made, player.Movement);
 
         // A player that already has one keeps it.
         var own = new BasicMovementManager();
         PhysicsObj other = world.CreateObject(2);
-        other.MovementManager = own;
+        other.Movement = own;
         world.Player = other;
-        Assert.Same(own, other.MovementManager);
+        Assert.Same(own, other.Movement);
     }
 
     [Fact]
@@ -201,13 +201,13 @@ public sealed class FirstSceneTests
         var parts = new SimplePartArray(1, 0);
         parts.SetSpheres(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) });
         noSetup.PartArray = parts;
-        noSetup.MovementManager = new BasicMovementManager();
+        noSetup.Movement = new BasicMovementManager();
         Assert.True(noSetup.EnterWorld(Spawn(terrain)));
         Assert.Equal(ObjectSetupIssues.NoSetupStepHeights, noSetup.SetupIssues);
 
         PhysicsObj noSpheres = world.CreateObject(3);
         noSpheres.PartArray = new SimplePartArray(1, 0) { StepUpHeight = 0.6f, StepDownHeight = 0.6f };
-        noSpheres.MovementManager = new BasicMovementManager();
+        noSpheres.Movement = new BasicMovementManager();
         Assert.True(noSpheres.EnterWorld(Spawn(terrain)));
         Assert.Equal(ObjectSetupIssues.NoCollisionSpheres, noSpheres.SetupIssues);
     }
@@ -220,7 +220,7 @@ public sealed class FirstSceneTests
         TerrainWorld terrain = Flat();
         var world = new PhysicsWorld(terrain);
         PhysicsObj obj = world.CreateObject(1);
-        obj.MovementManager = new BasicMovementManager();
+        obj.Movement = new BasicMovementManager();
         obj.EnterWorld(Spawn(terrain));
         obj.SetVelocity(new Vector3(0f, 3f, 0f));
         Vector3 before = obj.Position.Frame.Origin;

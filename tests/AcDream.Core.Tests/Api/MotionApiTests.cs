@@ -68,7 +68,7 @@ public class MotionApiTests
     {
         var world = new AcDream.Core.Physics.World.PhysicsWorld(0.0);
         var obj = world.CreateObject(1);
-        obj.MovementManager = new AcDream.Core.Physics.Objects.Seams.BasicMovementManager();
+        obj.Movement = new AcDream.Core.Physics.Objects.Seams.BasicMovementManager();
         Assert.Throws<InvalidOperationException>(() => MovementManager.Of(obj));
         Assert.False(MovementEvent.ApplyInterpretedMotion(obj, new InterpretedMotionState()));
     }

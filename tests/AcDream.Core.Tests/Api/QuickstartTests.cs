@@ -70,8 +70,8 @@ public sealed class QuickstartTests
         mm.DoMotion(MotionCommand.WalkForward, new MovementParameters());   // W down: walk, 3.12 m/s forward
         for (int f = 0; f < 60; f++) world.Tick(now += 1.0 / 60);           // 1 s at 60 fps: about 3.1 m north
         mm.StopMotion(MotionCommand.WalkForward, new MovementParameters()); // W up
-        mm.GetMinterp().ChargeJump();                                       // jump key down ...
-        mm.GetMinterp().Jump(0.5f, out _);                                  // ... and up: a 0.82 m jump (4.0 m/s up)
+        mm.GetOrCreateMotionInterpreter().ChargeJump();                     // jump key down ...
+        mm.GetOrCreateMotionInterpreter().Jump(0.5f, out _);                // ... and up: a 0.82 m jump (4.0 m/s up)
         float top = 0f;
         for (int f = 0; f < 60; f++) { world.Tick(now += 1.0 / 60); top = MathF.Max(top, player.Position.Frame.Origin.Z); }
         // quickstart-end

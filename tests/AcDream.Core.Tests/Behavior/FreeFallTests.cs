@@ -146,7 +146,7 @@ public class FreeFallTests
     {
         var world = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(10f, 10f, 0f));
-        obj.MovementManager = new BasicMovementManager(); // stays awake at rest
+        obj.Movement = new BasicMovementManager(); // stays awake at rest
         var parts = (SimplePartArray)obj.PartArray!;
         parts.SequenceVelocity = new Vector3(0f, 4f, 0f); // 4 m/s forward (+Y) in local axes
         obj.SetScaleStatic(2f);
@@ -154,6 +154,6 @@ public class FreeFallTests
         // local offset = 4 * 1/16 = 0.25 m, times scale 2 on walkable ground = 0.5 m north
         Assert.Equal(10.5f, obj.Position.Frame.Origin.Y);
         Assert.Equal(1, parts.HandleMovementCount);
-        Assert.Equal(1, ((BasicMovementManager)obj.MovementManager).UseTimeCount);
+        Assert.Equal(1, ((BasicMovementManager)obj.Movement).UseTimeCount);
     }
 }

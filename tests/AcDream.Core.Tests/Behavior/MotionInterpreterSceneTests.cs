@@ -43,7 +43,7 @@ public class MotionInterpreterSceneTests
         PhysicsObj player = Creature(world, 1, new PlayerWeenie { RunSkill = 200 }, new Vector3(100f, 40f, 20f));
         world.Player = player;
         MovementManager mm = MovementManager.Of(player);
-        Assert.Equal(0, mm.DoMotion(MotionCommand.WalkForward, new MovementParameters { HoldKeyToApply = run ? HoldKey.Run : HoldKey.None }));
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, new MovementParameters { HoldKeyToApply = run ? HoldKey.Run : HoldKey.None }));
 
         SweepScene.Run(world, 2);   // the first tick after the command starts the step
         float y0 = player.Position.Frame.Origin.Y;
@@ -85,13 +85,13 @@ public class MotionInterpreterSceneTests
         PhysicsObj player = Creature(world, 1, new PlayerWeenie { RunSkill = 200, JumpSkill = 300 }, new Vector3(100f, 40f, 20f));
         world.Player = player;
         MovementManager mm = MovementManager.Of(player);
-        MotionInterp mi = mm.GetMinterp();
+        MotionInterp mi = mm.GetOrCreateMotionInterpreter();
         var table = (RetailSpeedMotionTable)player.PartArray!.MotionTable!;
         mm.DoMotion(MotionCommand.WalkForward, new MovementParameters());
         SweepScene.Run(world, 2);
 
         // A full jump: v_z = 9.086529 (skill 300, extent 1); the flight lasts 2 * 9.0865 / 9.8 = 1.854 s (38 ticks).
-        Assert.Equal(0, mi.Jump(1f, out _));
+        Assert.Equal(MotionError.None, mi.Jump(1f, out _));
         Assert.Equal(MotionCommand.Falling, table.Substate);
         float top = 20f;
         int airborne = 0;
@@ -125,7 +125,7 @@ public class MotionInterpreterSceneTests
         // The server says: RunForward at 2.8256 (its run rate), no side-step, no turn.
         var state = new InterpretedMotionState { ForwardCommand = MotionCommand.RunForward, ForwardSpeed = 2.8256f };
         Assert.True(MovementEvent.ApplyInterpretedMotion(remote, state));
-        MotionInterp mi = MovementManager.Of(remote).GetMinterp();
+        MotionInterp mi = MovementManager.Of(remote).GetOrCreateMotionInterpreter();
         Assert.Equal(2.8256f, mi.MyRunRate);   // apply_interpreted_movement takes the run's speed as the run rate
         Assert.Equal(new Vector3(0f, 4f * 2.8256f, 0f), mi.GetStateVelocity());
 

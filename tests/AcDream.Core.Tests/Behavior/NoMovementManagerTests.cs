@@ -33,7 +33,8 @@ public sealed class NoMovementManagerTests
         creature.PartArray = body;
         Assert.True(creature.EnterWorld(SyntheticTerrain.OnGround(terrain, SyntheticTerrain.CellId(Bx, By, 4, 4), 100f, 100f)));
         Assert.Null(world.Player);
-        Assert.Equal(ObjectSetupIssues.NoMovementManager, creature.SetupIssues);
+        // Root motion is set directly here (no motion commands), so the missing motion table is reported beside it.
+        Assert.Equal(ObjectSetupIssues.NoMovementManager | ObjectSetupIssues.NoMotionTable, creature.SetupIssues);
         body.SequenceVelocity = new Vector3(0f, 3f, 0f);
 
         world.Tick(0.05);

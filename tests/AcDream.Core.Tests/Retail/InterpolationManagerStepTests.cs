@@ -41,7 +41,7 @@ public class InterpolationManagerStepTests
     {
         // Retail's 7.5 is a fallback below EPSILON (acclient.c:389239), not a min(): adjusted 6 m/s -> 12 m/s.
         var s = new ManagerScene(Start);
-        s.Creature.MovementManager = new StubMotion(maxSpeed: 1.0, adjustedMaxSpeed: 6.0);
+        s.Creature.Movement = new StubMotion(maxSpeed: 1.0, adjustedMaxSpeed: 6.0);
         s.Managers.InterpolateTo(North(10f), false);
         Frame offset = Step(s.Interpolation!, 0.1);
         float progress = (float)((float)(6.0 * 2.0) * 0.1);
@@ -54,7 +54,7 @@ public class InterpolationManagerStepTests
     public void AdjustOffset_UnknownSpeed_FallsBackToSevenPointFive(bool hasInterpreter, double speed)
     {
         var s = new ManagerScene(Start);
-        s.Creature.MovementManager = new StubMotion(speed, speed, hasInterpreter);
+        s.Creature.Movement = new StubMotion(speed, speed, hasInterpreter);
         s.Managers.InterpolateTo(North(10f), false);
         Frame offset = Step(s.Interpolation!, 0.1);
         float progress = (float)(7.5f * 0.1);

@@ -47,7 +47,7 @@ public class ManagerConstantsTests
         Assert.Equal(15.0, StickyManager.FallbackSpeed);                 // 15.0 (acclient.c:388579)
         Assert.Equal(1.0, StickyManager.StickyTime);                     // cur_time + 1.0 (acclient.c:388684)
         Assert.Equal(0.5, StickyManager.TargetTrackQuantum);             // set_target quantum (acclient.c:388687)
-        Assert.Equal(0x36u, StickyManager.UnstickMoveToError);           // cancel_moveto(0x36) (acclient.c:317420)
+        Assert.Equal(0x36u, (uint)StickyManager.UnstickMoveToError);           // cancel_moveto(0x36) (acclient.c:317420)
         Assert.Equal(0.9, ConstraintManager.FullyConstrainedFraction);   // max * 0.9 (acclient.c:389419)
     }
 }

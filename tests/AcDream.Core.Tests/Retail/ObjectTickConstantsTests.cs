@@ -86,7 +86,7 @@ public class ObjectTickConstantsTests
         Assert.Equal(1f, obj.Scale);
         Assert.Equal(0u, obj.CellId);
         Assert.Null(obj.PositionManager);
-        Assert.Null(obj.MovementManager);
+        Assert.Null(obj.Movement);
         Assert.Null(obj.PartArray);
     }
 
@@ -130,21 +130,21 @@ public class ObjectTickConstantsTests
     }
 
     [Fact]
-    public void GetMinterp_CreatesAMovementManager_WithRetailNoWeenieSpeed4_AndActivates()
+    public void GetOrCreateMotionInterpreter_CreatesAMovementManager_WithRetailNoWeenieSpeed4_AndActivates()
     {
         // get_minterp (acclient.c:319279) creates the movement manager when absent; CMotionInterp::get_max_speed
         // (acclient.c:343485) returns 1.0 * 4.0 when there is no weenie object.
         var world = new PhysicsWorld(3.0);
         PhysicsObj obj = world.CreateObject();
-        IMotionInterpreter? minterp = obj.GetMinterp();
+        IMotionInterpreter? minterp = obj.GetOrCreateMotionInterpreter();
         Assert.NotNull(minterp);
-        Assert.IsType<AcDream.Core.Physics.Motion.MovementManager>(obj.MovementManager);
+        Assert.IsType<AcDream.Core.Physics.Motion.MovementManager>(obj.Movement);
         Assert.IsType<AcDream.Core.Physics.Motion.MotionInterp>(minterp);
         Assert.Equal(4.0, minterp!.GetMaxSpeed());
         Assert.Equal(4.0, minterp.GetAdjustedMaxSpeed());
         Assert.Equal(4.0, BasicMovementManager.NoWeenieMaxSpeed);
         Assert.True(obj.IsActive);
         Assert.Equal(3.0, obj.UpdateTime);
-        Assert.Same(minterp, obj.GetMinterp()); // created once
+        Assert.Same(minterp, obj.GetOrCreateMotionInterpreter()); // created once
     }
 }

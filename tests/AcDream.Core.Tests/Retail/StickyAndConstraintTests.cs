@@ -104,7 +104,7 @@ public class StickyAndConstraintTests
         var s = new ManagerScene(Start);
         var tracker = new Tracker();
         var motion = new StubMotion(4.0, 4.0);
-        s.Creature.MovementManager = motion;
+        s.Creature.Movement = motion;
         s.Managers.TargetTracker = tracker;
         s.Managers.StickTo(42, 0.5f, 1f);
         Assert.Equal(1, tracker.Sets);
@@ -117,7 +117,7 @@ public class StickyAndConstraintTests
         s.Managers.UseTime();
         Assert.Equal(0u, s.Creature.GetStickyObjectId());
         Assert.Equal(1, tracker.Clears);
-        Assert.Equal(0x36u, motion.LastCancel);
+        Assert.Equal(AcDream.Core.Physics.Motion.MotionError.ActionCancelled, motion.LastCancel);   // 0x36
     }
 
     [Fact]

@@ -131,7 +131,7 @@ public class UpdatePhysicsInternalTests
         Assert.False(obj.IsActive);
 
         obj.SetActive(true);
-        obj.MovementManager = new BasicMovementManager();
+        obj.Movement = new BasicMovementManager();
         obj.UpdatePhysicsInternal(Q, ref f);
         Assert.True(obj.IsActive); // a movement manager keeps it awake
     }

@@ -34,7 +34,7 @@ public class GateCrossingTests
         w.StepObserver = probe;
         w.PlayerListener = probe;
         PhysicsObj observer = SceneTestContext.Add(w, ObserverId, SceneTestContext.At(90f, 90f));
-        observer.GetMinterp(); // a movement manager: never sleeps
+        observer.GetOrCreateMotionInterpreter(); // a movement manager: never sleeps
         PhysicsObj player = SceneTestContext.Add(w, PlayerId, SceneTestContext.At(96f, 96f));
         player.SetState(player.State & ~PhysicsState.Gravity);
         player.CalcAcceleration();
@@ -231,7 +231,7 @@ public class GateCrossingTests
             PhysicsObj a = SceneTestContext.Add(w, 500u, SceneTestContext.At(96f, 96f));
             PhysicsObj b = SceneTestContext.Add(w, 20u, SceneTestContext.At(150f, 40f));
             PhysicsObj stepper = SceneTestContext.Add(w, 300u, SceneTestContext.At(100f, 100f));
-            stepper.GetMinterp(); // never sleeps: its steps drive the second switch
+            stepper.GetOrCreateMotionInterpreter(); // never sleeps: its steps drive the second switch
             for (int k = 0; k < 400; k++)
             {
                 uint id = 100u + 3u * (uint)k; // 100..1297: before and after both players in the order

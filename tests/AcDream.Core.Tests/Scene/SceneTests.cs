@@ -119,7 +119,7 @@ public class SceneTests
         // Retail: an object with a movement manager does not deactivate itself; the scene keeps visiting it.
         var scene = new PhysicsWorld(0.0) { Sweep = new FlatGroundSweep() };
         PhysicsObj o = SceneTestContext.Add(scene, 5, SceneTestContext.At(60f, 50f));
-        o.GetMinterp();
+        o.GetOrCreateMotionInterpreter();
         double t = 0;
         for (int i = 1; i <= 20; i++)
         {

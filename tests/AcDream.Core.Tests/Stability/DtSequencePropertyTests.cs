@@ -171,7 +171,7 @@ public class DtSequencePropertyTests
                 PhysicsObj obj = TickTestContext.CreateObject(world, new Vector3(12f, 12f, 0f));
                 if (awake)
                 {
-                    obj.MovementManager = new BasicMovementManager();
+                    obj.Movement = new BasicMovementManager();
                 }
 
                 Position start = obj.Position;

@@ -56,7 +56,7 @@ internal static class MotionFixture
         }
 
         MovementManager mm = MovementManager.Of(obj);
-        return (obj, mm, mm.GetMinterp(), table);
+        return (obj, mm, mm.GetOrCreateMotionInterpreter(), table);
     }
 
     /// <summary>Puts the object on the ground (CONTACT and ON_WALKABLE) without a sweep.</summary>

@@ -53,7 +53,7 @@ public sealed partial class InterpolationManager
         }
 
         float myMaxSpeed = 0f;
-        IMotionInterpreter? minterp = obj.GetMinterp();
+        IMotionInterpreter? minterp = obj.GetOrCreateMotionInterpreter();
         if (minterp is not null)
         {
             double s = UseAdjustedSpeed ? minterp.GetAdjustedMaxSpeed() : minterp.GetMaxSpeed();

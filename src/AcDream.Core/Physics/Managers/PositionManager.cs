@@ -30,7 +30,7 @@ public sealed class PositionManager
 
     /// <summary>
     /// Client seam for the target tracking the sticky manager requests (retail's TargetManager); null = nobody is told.
-    /// (Its move-to cancellation goes to <see cref="PhysicsObj.MovementManager"/>.)
+    /// (Its move-to cancellation goes to <see cref="PhysicsObj.Movement"/>.)
     /// </summary>
     public ITargetTracker? TargetTracker { get; set; }
 

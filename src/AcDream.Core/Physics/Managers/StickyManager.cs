@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
 
@@ -36,8 +37,9 @@ public sealed class StickyManager
     /// <summary>Update quantum passed to set_target, seconds. Retail: 0.5 (acclient.c:388687).</summary>
     public const double TargetTrackQuantum = 0.5;
 
-    /// <summary>Error code of the move-to cancelled by an unstick. Retail: 0x36 (acclient.c:317420).</summary>
-    public const uint UnstickMoveToError = 0x36;
+    /// <summary>Error of the move-to cancelled by an unstick: <see cref="MotionError.ActionCancelled"/>. Retail: 0x36
+    /// (acclient.c:317420).</summary>
+    public const MotionError UnstickMoveToError = MotionError.ActionCancelled;
 
     // retail: StickyManager::Create (acclient.c:388727)
     internal StickyManager(PhysicsObj physicsObj)
@@ -100,7 +102,7 @@ public sealed class StickyManager
         }
 
         double speed = 0.0;
-        IMotionInterpreter? minterp = obj.GetMinterp();
+        IMotionInterpreter? minterp = obj.GetOrCreateMotionInterpreter();
         if (minterp is not null)
         {
             speed = minterp.GetMaxSpeed() * SpeedMultiplier;

@@ -5,7 +5,18 @@ namespace AcDream.Core.Physics.Motion;
 /// <param name="Speed">Its speed.</param>
 /// <param name="Stamp">Its server action stamp (15 bits used).</param>
 /// <param name="Autonomous">True when this client started it.</param>
-public readonly record struct ActionNode(uint Action, float Speed, uint Stamp, bool Autonomous);
+public readonly record struct ActionNode(MotionCommand Action, float Speed, uint Stamp, bool Autonomous)
+{
+    // The command prints by name (an unnamed one as its hex id).
+    private bool PrintMembers(System.Text.StringBuilder builder)
+    {
+        builder.Append("Action = ").Append(MotionCommandText.Format(Action))
+               .Append(", Speed = ").Append(Speed.ToString(System.Globalization.CultureInfo.InvariantCulture))
+               .Append(", Stamp = ").Append(Stamp)
+               .Append(", Autonomous = ").Append(Autonomous);
+        return true;
+    }
+}
 
 /// <summary>
 /// A motion state's queue of actions (retail <c>LList&lt;ActionNode&gt;</c>), first in first out, in a fixed array so the
@@ -51,15 +62,16 @@ public sealed class ActionList
         Count++;
     }
 
-    /// <summary>Removes the oldest action and returns its command, or 0 when empty (retail <c>RemoveAction</c>).</summary>
-    public uint RemoveFirst()
+    /// <summary>Removes the oldest action and returns its command, or <see cref="MotionCommand.None"/> when empty (retail
+    /// <c>RemoveAction</c>).</summary>
+    public MotionCommand RemoveFirst()
     {
         if (Count == 0)
         {
-            return 0;
+            return MotionCommand.None;
         }
 
-        uint action = _nodes[_head].Action;
+        MotionCommand action = _nodes[_head].Action;
         _head = (_head + 1) % Capacity;
         Count--;
         return action;

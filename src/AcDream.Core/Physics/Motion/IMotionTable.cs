@@ -14,19 +14,19 @@ namespace AcDream.Core.Physics.Motion;
 public interface IMotionTable
 {
     /// <summary>Starts <paramref name="motion"/> (a style, substate, modifier or action) at <c>p.Speed</c>.</summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
     // retail seam: CPartArray::DoInterpretedMotion (acclient.c:326017)
-    int DoInterpretedMotion(uint motion, in MovementParameters p);
+    MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p);
 
     /// <summary>Stops <paramref name="motion"/>.</summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
     // retail seam: CPartArray::StopInterpretedMotion (acclient.c:326053)
-    int StopInterpretedMotion(uint motion, in MovementParameters p);
+    MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p);
 
     /// <summary>Stops everything: back to the style's default substate with no modifiers.</summary>
-    /// <returns>0 on success.</returns>
+    /// <returns><see cref="MotionError.None"/>.</returns>
     // retail seam: CPartArray::StopCompletelyInternal (acclient.c:326089)
-    int StopCompletely();
+    MotionError StopCompletely();
 
     /// <summary>Puts the table in its default state (non-combat, Ready, nothing moving).</summary>
     // retail seam: CPartArray::InitializeMotionTables
@@ -39,7 +39,7 @@ public interface IMotionTable
     /// <summary>Takes the oldest started motion whose animations have finished, in start order.</summary>
     /// <returns>False when none has finished.</returns>
     // retail seam: MotionTableManager::CheckForCompletedMotions (acclient.c:329959)
-    bool TryTakeCompletedMotion(out uint motion, out bool success);
+    bool TryTakeCompletedMotion(out MotionCommand motion, out bool success);
 
     /// <summary>The sequence's velocity in the object's local axes, m/s (retail <c>CSequence::velocity</c>).</summary>
     Vector3 Velocity { get; }

@@ -17,5 +17,5 @@ public interface IMoveToManager
     bool IsMovingTo();
 
     /// <summary>Cancels the move-to with a weenie error code (retail <c>MoveToManager::CancelMoveTo</c>).</summary>
-    void CancelMoveTo(uint error);
+    void CancelMoveTo(MotionError error);
 }

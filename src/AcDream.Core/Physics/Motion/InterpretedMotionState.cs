@@ -13,10 +13,10 @@ public sealed class InterpretedMotionState
     public InterpretedMotionState() => Reset();
 
     /// <summary>The stance (style command).</summary>
-    public uint CurrentStyle { get; set; }
+    public MotionCommand CurrentStyle { get; set; }
 
     /// <summary>The forward substate (Ready, WalkForward, RunForward, Falling...).</summary>
-    public uint ForwardCommand { get; set; }
+    public MotionCommand ForwardCommand { get; set; }
 
     /// <summary>Speed of <see cref="ForwardCommand"/> (negative for backwards; the run rate when running).</summary>
     /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
@@ -29,7 +29,7 @@ public sealed class InterpretedMotionState
     private float _forwardSpeed;
 
     /// <summary>The side-step modifier (0 or <see cref="MotionCommand.SideStepRight"/>).</summary>
-    public uint SidestepCommand { get; set; }
+    public MotionCommand SidestepCommand { get; set; }
 
     /// <summary>Speed of the side-step (negative is left).</summary>
     /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
@@ -42,7 +42,7 @@ public sealed class InterpretedMotionState
     private float _sidestepSpeed;
 
     /// <summary>The turn modifier (0 or <see cref="MotionCommand.TurnRight"/>).</summary>
-    public uint TurnCommand { get; set; }
+    public MotionCommand TurnCommand { get; set; }
 
     /// <summary>Speed of the turn (negative is left).</summary>
     /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
@@ -63,9 +63,9 @@ public sealed class InterpretedMotionState
         CurrentStyle = MotionCommand.NonCombat;
         ForwardCommand = MotionCommand.Ready;
         ForwardSpeed = 1f;
-        SidestepCommand = 0;
+        SidestepCommand = MotionCommand.None;
         SidestepSpeed = 1f;
-        TurnCommand = 0;
+        TurnCommand = MotionCommand.None;
         TurnSpeed = 1f;
         Actions.Clear();
     }
@@ -92,9 +92,12 @@ public sealed class InterpretedMotionState
     }
 
     /// <summary>Records a started motion: turn, side-step, substate, style or action.</summary>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed
+    /// is NaN or infinite (state unchanged).</exception>
     // retail: InterpretedMotionState::ApplyMotion (acclient.c:332758)
-    public void ApplyMotion(uint motion, in MovementParameters p)
+    public void ApplyMotion(MotionCommand motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         if (motion == MotionCommand.TurnRight)
         {
             TurnCommand = MotionCommand.TurnRight;
@@ -105,14 +108,14 @@ public sealed class InterpretedMotionState
             SidestepCommand = MotionCommand.SideStepRight;
             SidestepSpeed = p.Speed;
         }
-        else if ((motion & MotionCommand.SubstateMask) != 0)
+        else if (((uint)motion & (uint)MotionCommandClass.Substate) != 0)
         {
             ForwardCommand = motion;
             ForwardSpeed = p.Speed;
         }
-        else if ((motion & MotionCommand.StyleMask) == 0)
+        else if (((uint)motion & (uint)MotionCommandClass.Style) == 0)
         {
-            if ((motion & MotionCommand.ActionMask) != 0)
+            if (((uint)motion & (uint)MotionCommandClass.Action) != 0)
             {
                 AddAction(motion, p.Speed, p.ActionStamp, p.Has(MovementParameterFlags.Autonomous));
             }
@@ -126,17 +129,17 @@ public sealed class InterpretedMotionState
 
     /// <summary>Records a stopped motion.</summary>
     // retail: InterpretedMotionState::RemoveMotion (acclient.c:332536)
-    public void RemoveMotion(uint motion)
+    public void RemoveMotion(MotionCommand motion)
     {
         if (motion == MotionCommand.TurnRight)
         {
-            TurnCommand = 0;
+            TurnCommand = MotionCommand.None;
         }
         else if (motion == MotionCommand.SideStepRight)
         {
-            SidestepCommand = 0;
+            SidestepCommand = MotionCommand.None;
         }
-        else if ((motion & MotionCommand.SubstateMask) != 0)
+        else if (((uint)motion & (uint)MotionCommandClass.Substate) != 0)
         {
             if (motion == ForwardCommand)
             {
@@ -144,7 +147,7 @@ public sealed class InterpretedMotionState
                 ForwardSpeed = 1f;
             }
         }
-        else if ((motion & MotionCommand.StyleMask) != 0 && motion == CurrentStyle)
+        else if (((uint)motion & (uint)MotionCommandClass.Style) != 0 && motion == CurrentStyle)
         {
             CurrentStyle = MotionCommand.NonCombat;
         }
@@ -152,14 +155,21 @@ public sealed class InterpretedMotionState
 
     /// <summary>Queues an action.</summary>
     // retail: InterpretedMotionState::AddAction (acclient.c:332724)
-    public void AddAction(uint action, float speed, uint stamp, bool autonomous) =>
+    public void AddAction(MotionCommand action, float speed, uint stamp, bool autonomous) =>
         Actions.Add(new ActionNode(action, speed, stamp, autonomous));
 
-    /// <summary>Removes the oldest action and returns its command (0 when none).</summary>
+    /// <summary>Removes the oldest action and returns its command (<see cref="MotionCommand.None"/> when none).</summary>
     // retail: InterpretedMotionState::RemoveAction (acclient.c:332788)
-    public uint RemoveAction() => Actions.RemoveFirst();
+    public MotionCommand RemoveAction() => Actions.RemoveFirst();
 
     /// <summary>Number of queued actions.</summary>
     // retail: InterpretedMotionState::GetNumActions (acclient.c:332814)
     public int GetNumActions() => Actions.Count;
+
+    /// <summary>The state's commands by name (an unnamed one as its hex id), their speeds and the number of queued actions.</summary>
+    public override string ToString() => string.Create(System.Globalization.CultureInfo.InvariantCulture,
+        $"InterpretedMotionState {{ CurrentStyle = {MotionCommandText.Format(CurrentStyle)}, "
+        + $"ForwardCommand = {MotionCommandText.Format(ForwardCommand)}, ForwardSpeed = {ForwardSpeed}, "
+        + $"SidestepCommand = {MotionCommandText.Format(SidestepCommand)}, SidestepSpeed = {SidestepSpeed}, "
+        + $"TurnCommand = {MotionCommandText.Format(TurnCommand)}, TurnSpeed = {TurnSpeed}, Actions = {Actions.Count} }}");
 }

@@ -64,16 +64,17 @@ public static class MotionCommandIds
         0x10000188u, 0x10000189u, 0x1000018Au, 0x1000018Bu, 0x1000018Cu, 0x1000018Du, 0x1000018Eu, 0x1000018Fu,
         0x10000190u, 0x10000191u, 0x10000192u, 0x10000193u, 0x10000194u, 0x10000195u, 0x10000196u, 0x10000197u,    ];
 
-    /// <summary>The command of wire index <paramref name="index"/>, or false when the index is outside the table.</summary>
-    public static bool TryGet(ushort index, out uint command)
+    /// <summary>The command of wire index <paramref name="index"/>, or false (and <see cref="MotionCommand.None"/>) when the
+    /// index is outside the table.</summary>
+    public static bool TryGet(ushort index, out MotionCommand command)
     {
         if (index >= Count)
         {
-            command = 0;
+            command = MotionCommand.None;
             return false;
         }
 
-        command = Ids[index];
+        command = (MotionCommand)Ids[index];
         return true;
     }
 }

@@ -10,10 +10,10 @@ public sealed partial class MotionInterp
     /// (<see cref="AdjustMotion"/>), refuses postures and emotes outside the non-combat style and a seventh action, plays
     /// the result (<see cref="DoInterpretedMotion"/>) and records the command in the raw state.
     /// </summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number (nothing recorded).</returns>
-    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <returns><see cref="MotionError.None"/> on success, else the error (nothing recorded).</returns>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::DoMotion (acclient.c:344599)
-    public int DoMotion(uint motion, in MovementParameters p)
+    public MotionError DoMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
         PhysicsObj? obj = _physicsObj;
@@ -34,7 +34,7 @@ public sealed partial class MotionInterp
             SetHoldKey(p.HoldKeyToApply, p.Has(MovementParameterFlags.CancelMoveTo));
         }
 
-        uint adjustedMotion = motion;
+        MotionCommand adjustedMotion = motion;
         AdjustMotion(ref adjustedMotion, ref adjusted.Speed, p.HoldKeyToApply);
         if (InterpretedState.CurrentStyle != MotionCommand.NonCombat)
         {
@@ -48,18 +48,18 @@ public sealed partial class MotionInterp
                     return MotionError.CantLieDownInCombat;
             }
 
-            if ((motion & MotionCommand.ChatEmoteMask) != 0)
+            if (((uint)motion & (uint)MotionCommandClass.ChatEmote) != 0)
             {
                 return MotionError.CantChatEmoteInCombat;
             }
         }
 
-        if ((motion & MotionCommand.ActionMask) != 0 && InterpretedState.GetNumActions() >= 6)
+        if (((uint)motion & (uint)MotionCommandClass.Action) != 0 && InterpretedState.GetNumActions() >= 6)
         {
             return MotionError.TooManyActions;
         }
 
-        int result = DoInterpretedMotion(adjustedMotion, adjusted);
+        MotionError result = DoInterpretedMotion(adjustedMotion, adjusted);
         if (result == MotionError.None && p.Has(MovementParameterFlags.ModifyRawState))
         {
             RawState.ApplyMotion(motion, p);
@@ -70,10 +70,10 @@ public sealed partial class MotionInterp
 
     /// <summary>Stops a command as the player gives it: converts it as <see cref="DoMotion"/> does, stops the result and
     /// removes the command from the raw state.</summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::StopMotion (acclient.c:344080)
-    public int StopMotion(uint motion, in MovementParameters p)
+    public MotionError StopMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
         PhysicsObj? obj = _physicsObj;
@@ -89,9 +89,9 @@ public sealed partial class MotionInterp
         }
 
         MovementParameters adjusted = p;
-        uint adjustedMotion = motion;
+        MotionCommand adjustedMotion = motion;
         AdjustMotion(ref adjustedMotion, ref adjusted.Speed, p.HoldKeyToApply);
-        int result = StopInterpretedMotion(adjustedMotion, adjusted);
+        MotionError result = StopInterpretedMotion(adjustedMotion, adjusted);
         if (result == MotionError.None && p.Has(MovementParameterFlags.ModifyRawState))
         {
             RawState.RemoveMotion(motion);
@@ -105,12 +105,20 @@ public sealed partial class MotionInterp
     /// queued with the jump error it imposes, and is recorded in the interpreted state; in the air (or, while a standing
     /// long jump charges, a walk, run or side-step) it is only recorded; an action in the air fails with 0x24.
     /// </summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::DoInterpretedMotion (acclient.c:343974)
-    public int DoInterpretedMotion(uint motion, in MovementParameters p)
+    public MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
+        return DoInterpretedMotionUnchecked(motion, p);
+    }
+
+    // The body of DoInterpretedMotion, for apply_interpreted_movement: its parameters are retail's defaults with the interpreted
+    // state's speeds (finite by their setters), so the tick's path runs no argument check.
+    // retail: CMotionInterp::DoInterpretedMotion (acclient.c:343974)
+    private MotionError DoInterpretedMotionUnchecked(MotionCommand motion, in MovementParameters p)
+    {
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
         {
@@ -118,7 +126,7 @@ public sealed partial class MotionInterp
         }
 
         obj.Touch();
-        int result;
+        MotionError result;
         if (ContactAllowsMove(motion))
         {
             if (!StandingLongJump || (motion != MotionCommand.WalkForward && motion != MotionCommand.RunForward
@@ -132,7 +140,7 @@ public sealed partial class MotionInterp
                 result = obj.DoInterpretedMotion(motion, p);
                 if (result == MotionError.None)
                 {
-                    int jumpError;
+                    MotionError jumpError;
                     if (p.Has(MovementParameterFlags.DisableJumpDuringLink))
                     {
                         jumpError = MotionError.YouCantJumpFromThisPosition;
@@ -140,7 +148,7 @@ public sealed partial class MotionInterp
                     else
                     {
                         jumpError = MotionAllowsJump(motion);
-                        if (jumpError == MotionError.None && (motion & MotionCommand.ActionMask) == 0)
+                        if (jumpError == MotionError.None && ((uint)motion & (uint)MotionCommandClass.Action) == 0)
                         {
                             jumpError = MotionAllowsJump(InterpretedState.ForwardCommand);
                         }
@@ -158,7 +166,7 @@ public sealed partial class MotionInterp
                 result = RecordOnly(motion, p);
             }
         }
-        else if ((motion & MotionCommand.ActionMask) == 0)
+        else if (((uint)motion & (uint)MotionCommandClass.Action) == 0)
         {
             result = RecordOnly(motion, p);
         }
@@ -175,7 +183,7 @@ public sealed partial class MotionInterp
         return result;
     }
 
-    private int RecordOnly(uint motion, in MovementParameters p)
+    private MotionError RecordOnly(MotionCommand motion, in MovementParameters p)
     {
         if (p.Has(MovementParameterFlags.ModifyInterpretedState))
         {
@@ -187,12 +195,20 @@ public sealed partial class MotionInterp
 
     /// <summary>Stops an interpreted motion: through the motion table when it may move (queueing a Ready), otherwise only
     /// in the interpreted state.</summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="System.ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: CMotionInterp::StopInterpretedMotion (acclient.c:344033)
-    public int StopInterpretedMotion(uint motion, in MovementParameters p)
+    public MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
+        return StopInterpretedMotionUnchecked(motion, p);
+    }
+
+    // The body of StopInterpretedMotion, for apply_interpreted_movement: its parameters are retail's defaults with the interpreted
+    // state's speeds (finite by their setters), so the tick's path runs no argument check.
+    // retail: CMotionInterp::StopInterpretedMotion (acclient.c:344033)
+    private MotionError StopInterpretedMotionUnchecked(MotionCommand motion, in MovementParameters p)
+    {
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
         {
@@ -200,7 +216,7 @@ public sealed partial class MotionInterp
         }
 
         obj.Touch();
-        int result;
+        MotionError result;
         if (!ContactAllowsMove(motion)
             || (StandingLongJump && (motion == MotionCommand.WalkForward || motion == MotionCommand.RunForward
                                      || motion == MotionCommand.SideStepRight)))
@@ -235,9 +251,9 @@ public sealed partial class MotionInterp
 
     /// <summary>Stops everything: both states back to Ready with no side-step or turn, the motion table stopped, a Ready
     /// queued with the jump error of the motion that was playing.</summary>
-    /// <returns>0, or <see cref="MotionError.NoPhysicsObject"/>.</returns>
+    /// <returns><see cref="MotionError.None"/>, or <see cref="MotionError.NoPhysicsObject"/>.</returns>
     // retail: CMotionInterp::StopCompletely (acclient.c:343596)
-    public int StopCompletely()
+    public MotionError StopCompletely()
     {
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
@@ -247,7 +263,7 @@ public sealed partial class MotionInterp
 
         obj.Touch();
         obj.CancelMoveTo();
-        int jumpError = MotionAllowsJump(InterpretedState.ForwardCommand);
+        MotionError jumpError = MotionAllowsJump(InterpretedState.ForwardCommand);
         RawState.ForwardCommand = MotionCommand.Ready;
         RawState.ForwardSpeed = 1f;
         RawState.SidestepCommand = 0;
@@ -273,7 +289,7 @@ public sealed partial class MotionInterp
     /// <see cref="ApplyRunToCommand"/>. A run forward is left alone.
     /// </summary>
     // retail: CMotionInterp::adjust_motion (acclient.c:343745)
-    public void AdjustMotion(ref uint motion, ref float speed, HoldKey key)
+    public void AdjustMotion(ref MotionCommand motion, ref float speed, HoldKey key)
     {
         if (_weenieObj is not null && !_weenieObj.IsCreature)
         {
@@ -316,7 +332,7 @@ public sealed partial class MotionInterp
     /// <summary>Applies the run key: a walk forward (at positive speed) becomes a run, every walk speed is multiplied by
     /// the run rate; a turn is 1.5 times faster; a side-step is multiplied by the run rate and clamped to ±3.</summary>
     // retail: CMotionInterp::apply_run_to_command (acclient.c:343438)
-    public void ApplyRunToCommand(ref uint motion, ref float speed)
+    public void ApplyRunToCommand(ref MotionCommand motion, ref float speed)
     {
         double rate = RunRate();
         switch (motion)
@@ -364,7 +380,7 @@ public sealed partial class MotionInterp
         s.TurnCommand = r.TurnCommand;
         s.TurnSpeed = r.TurnSpeed;
 
-        uint c = s.ForwardCommand;
+        MotionCommand c = s.ForwardCommand;
         float v = s.ForwardSpeed;
         AdjustMotion(ref c, ref v, r.ForwardHoldKey);
         s.ForwardCommand = c;
@@ -409,42 +425,42 @@ public sealed partial class MotionInterp
             MyRunRate = s.ForwardSpeed;
         }
 
-        DoInterpretedMotion(s.CurrentStyle, p);
+        DoInterpretedMotionUnchecked(s.CurrentStyle, p);
         if (ContactAllowsMove(s.ForwardCommand))
         {
             if (StandingLongJump)
             {
                 p.Speed = 1f;
-                DoInterpretedMotion(MotionCommand.Ready, p);
-                StopInterpretedMotion(MotionCommand.SideStepRight, p);
+                DoInterpretedMotionUnchecked(MotionCommand.Ready, p);
+                StopInterpretedMotionUnchecked(MotionCommand.SideStepRight, p);
             }
             else
             {
                 p.Speed = s.ForwardSpeed;
-                DoInterpretedMotion(s.ForwardCommand, p);
-                uint side = s.SidestepCommand;
-                if (side != 0)
+                DoInterpretedMotionUnchecked(s.ForwardCommand, p);
+                MotionCommand side = s.SidestepCommand;
+                if (side != MotionCommand.None)
                 {
                     p.Speed = s.SidestepSpeed;
-                    DoInterpretedMotion(side, p);
+                    DoInterpretedMotionUnchecked(side, p);
                 }
                 else
                 {
-                    StopInterpretedMotion(MotionCommand.SideStepRight, p);
+                    StopInterpretedMotionUnchecked(MotionCommand.SideStepRight, p);
                 }
             }
         }
         else
         {
             p.Speed = 1f;
-            DoInterpretedMotion(MotionCommand.Falling, p);
+            DoInterpretedMotionUnchecked(MotionCommand.Falling, p);
         }
 
-        uint turn = s.TurnCommand;
-        if (turn != 0)
+        MotionCommand turn = s.TurnCommand;
+        if (turn != MotionCommand.None)
         {
             p.Speed = s.TurnSpeed;
-            DoInterpretedMotion(turn, p);
+            DoInterpretedMotionUnchecked(turn, p);
         }
         else
         {
@@ -511,7 +527,7 @@ public sealed partial class MotionInterp
     /// <summary>The motion at the head of the pending list finished: an action's stickiness and its queued entries go,
     /// and the node is removed.</summary>
     // retail: CMotionInterp::MotionDone (acclient.c:343640)
-    public void MotionDone(bool success)
+    internal void MotionDone(bool success)
     {
         PhysicsObj? obj = _physicsObj;
         if (obj is null || PendingMotions.Count == 0)
@@ -519,7 +535,7 @@ public sealed partial class MotionInterp
             return;
         }
 
-        if ((PendingMotions.Head.Motion & MotionCommand.ActionMask) != 0)
+        if (((uint)PendingMotions.Head.Motion & (uint)MotionCommandClass.Action) != 0)
         {
             obj.UnstickFromObject();
             InterpretedState.RemoveAction();
@@ -531,7 +547,7 @@ public sealed partial class MotionInterp
 
     /// <summary>The object left the world: every pending motion is finished as <see cref="MotionDone"/> does.</summary>
     // retail: CMotionInterp::HandleExitWorld (acclient.c:343678)
-    public void HandleExitWorld()
+    internal void HandleExitWorld()
     {
         while (_physicsObj is not null && PendingMotions.Count != 0)
         {
@@ -539,20 +555,26 @@ public sealed partial class MotionInterp
         }
     }
 
-    /// <summary>Turns the run key on or off (re-applying the movement when it changes).</summary>
+    /// <summary>Turns the run key on or off: when that changes the current hold key, the movement is re-applied (a walk
+    /// becomes a run or back).</summary>
+    /// <param name="run">True: the run key is held.</param>
+    /// <param name="cancelMoveToOnChange">True: the re-applied movement also cancels a running move-to (as retail's key
+    /// handler, <c>CommandInterpreter</c>, always asks); false keeps it. Unused when the hold key does not change.</param>
     // retail: CMotionInterp::set_hold_run (acclient.c:344491)
-    public void SetHoldRun(bool run, bool cancelMoveTo)
+    public void SetHoldRun(bool run, bool cancelMoveToOnChange)
     {
         if (!run != (RawState.CurrentHoldKey != HoldKey.Run))
         {
             RawState.CurrentHoldKey = run ? HoldKey.Run : HoldKey.None;
-            ApplyCurrentMovement(cancelMoveTo, false);
+            ApplyCurrentMovement(cancelMoveToOnChange, false);
         }
     }
 
     /// <summary>Sets the current hold key to None or Run (re-applying the movement when it changes; Invalid is ignored).</summary>
+    /// <param name="key">The hold key.</param>
+    /// <param name="cancelMoveToOnChange">True: the re-applied movement also cancels a running move-to.</param>
     // retail: CMotionInterp::SetHoldKey (acclient.c:344501)
-    public void SetHoldKey(HoldKey key, bool cancelMoveTo)
+    public void SetHoldKey(HoldKey key, bool cancelMoveToOnChange)
     {
         HoldKey current = RawState.CurrentHoldKey;
         if (key == current)
@@ -565,13 +587,13 @@ public sealed partial class MotionInterp
             if (current == HoldKey.Run)
             {
                 RawState.CurrentHoldKey = HoldKey.None;
-                ApplyCurrentMovement(cancelMoveTo, false);
+                ApplyCurrentMovement(cancelMoveToOnChange, false);
             }
         }
         else if (key == HoldKey.Run && current != HoldKey.Run)
         {
             RawState.CurrentHoldKey = HoldKey.Run;
-            ApplyCurrentMovement(cancelMoveTo, false);
+            ApplyCurrentMovement(cancelMoveToOnChange, false);
         }
     }
 }

@@ -31,18 +31,19 @@ public sealed partial class MotionInterp
         return _weenieObj.InqJumpVelocity(extent, out float vz) ? vz : 0.0;
     }
 
-    /// <summary>Whether a jump may be charged: 0x49 when the weenie refuses the charge, 0x48 while fallen, crouching,
-    /// sitting or sleeping, else 0.</summary>
+    /// <summary>Whether a jump may be charged: <see cref="MotionError.CantJumpLoadedDown"/> when the weenie refuses the
+    /// charge, <see cref="MotionError.YouCantJumpFromThisPosition"/> while fallen, crouching, sitting or sleeping, else
+    /// <see cref="MotionError.None"/>.</summary>
     // retail: CMotionInterp::jump_charge_is_allowed (acclient.c:343317)
-    public int JumpChargeIsAllowed()
+    public MotionError JumpChargeIsAllowed()
     {
         if (_weenieObj is not null && !_weenieObj.CanJump(JumpExtent))
         {
             return MotionError.CantJumpLoadedDown;
         }
 
-        uint f = InterpretedState.ForwardCommand;
-        return f == MotionCommand.Fallen || (f > 0x41000011u && f <= MotionCommand.Sleeping)
+        MotionCommand f = InterpretedState.ForwardCommand;
+        return f == MotionCommand.Fallen || ((uint)f > 0x41000011u && f <= MotionCommand.Sleeping)
             ? MotionError.YouCantJumpFromThisPosition
             : MotionError.None;
     }
@@ -51,9 +52,9 @@ public sealed partial class MotionInterp
     /// Starts charging a jump (<see cref="JumpChargeIsAllowed"/>); charging while standing still on the ground starts a
     /// standing long jump.
     /// </summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
     // retail: CMotionInterp::charge_jump (acclient.c:343844)
-    public int ChargeJump()
+    public MotionError ChargeJump()
     {
         if (_weenieObj is not null && !_weenieObj.CanJump(JumpExtent))
         {
@@ -61,14 +62,14 @@ public sealed partial class MotionInterp
         }
 
         InterpretedMotionState s = InterpretedState;
-        uint f = s.ForwardCommand;
-        if (f == MotionCommand.Fallen || (f > 0x41000011u && f <= MotionCommand.Sleeping))
+        MotionCommand f = s.ForwardCommand;
+        if (f == MotionCommand.Fallen || ((uint)f > 0x41000011u && f <= MotionCommand.Sleeping))
         {
             return MotionError.YouCantJumpFromThisPosition;
         }
 
-        if (_physicsObj is not null && OnGround(_physicsObj) && f == MotionCommand.Ready && s.SidestepCommand == 0
-            && s.TurnCommand == 0)
+        if (_physicsObj is not null && OnGround(_physicsObj) && f == MotionCommand.Ready && s.SidestepCommand == MotionCommand.None
+            && s.TurnCommand == MotionCommand.None)
         {
             _physicsObj.Touch();
             StandingLongJump = true;
@@ -80,7 +81,7 @@ public sealed partial class MotionInterp
     /// <summary>True when the object may start <paramref name="motion"/> now: turns, Falling and Dead always; any motion
     /// for a non-creature or an object without gravity, or on the ground.</summary>
     // retail: CMotionInterp::contact_allows_move (acclient.c:343881)
-    public bool ContactAllowsMove(uint motion)
+    public bool ContactAllowsMove(MotionCommand motion)
     {
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
@@ -109,14 +110,21 @@ public sealed partial class MotionInterp
     }
 
     /// <summary>
-    /// Whether a jump of charge <paramref name="extent"/> may start: 0x24 in the air, 0x47 fully constrained, the jump
+    /// Whether a jump of charge <paramref name="extent"/> may start: <see cref="MotionError.YouCantJumpWhileInTheAir"/> in
+    /// the air, <see cref="MotionError.GeneralMovementFailure"/> fully constrained, the jump
     /// error of the oldest unfinished motion, <see cref="JumpChargeIsAllowed"/>, <see cref="MotionAllowsJump"/> of the
-    /// forward motion, 0x47 when the weenie refuses the stamina cost; else 0 with the cost in
+    /// forward motion, <see cref="MotionError.GeneralMovementFailure"/> when the weenie refuses the stamina cost; else
+    /// <see cref="MotionError.None"/> with the cost in
     /// <paramref name="staminaCost"/> (0 with no weenie).
     /// </summary>
+    /// <param name="extent">The jump's charge, 0..1 (the power bar's level).</param>
+    /// <param name="staminaCost">The stamina the jump costs (the weenie's <see cref="IMotionWeenie.JumpStaminaCost"/>).</param>
+    /// <exception cref="System.ArgumentException"><paramref name="extent"/> is NaN or infinite.</exception>
+    /// <exception cref="System.ArgumentOutOfRangeException"><paramref name="extent"/> is outside [0, 1].</exception>
     // retail: CMotionInterp::jump_is_allowed (acclient.c:343921)
-    public int JumpIsAllowed(float extent, out int staminaCost)
+    public MotionError JumpIsAllowed(float extent, out int staminaCost)
     {
+        CheckJumpExtent(extent);
         staminaCost = 0;
         PhysicsObj? obj = _physicsObj;
         if (obj is null
@@ -130,18 +138,18 @@ public sealed partial class MotionInterp
             return MotionError.GeneralMovementFailure;
         }
 
-        if (PendingMotions.Count != 0 && PendingMotions.Head.JumpErrorCode != 0)
+        if (PendingMotions.Count != 0 && PendingMotions.Head.JumpErrorCode != MotionError.None)
         {
             return PendingMotions.Head.JumpErrorCode;
         }
 
-        int result = JumpChargeIsAllowed();
+        MotionError result = JumpChargeIsAllowed();
         if (result != MotionError.None)
         {
             return result;
         }
 
-        int motionError = MotionAllowsJump(InterpretedState.ForwardCommand);
+        MotionError motionError = MotionAllowsJump(InterpretedState.ForwardCommand);
         if (motionError != MotionError.None || _weenieObj is null)
         {
             return motionError;
@@ -155,15 +163,19 @@ public sealed partial class MotionInterp
     /// the object off the ground (ON_WALKABLE cleared, so <see cref="LeaveGround"/> gives it the launch velocity);
     /// otherwise ends a standing long jump.
     /// </summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
+    /// <param name="extent">The jump's charge, 0..1: the power bar's level, as retail's only caller
+    /// (<c>ClientCombatSystem::DoJump</c>) passes it. The launch speed (<see cref="GetJumpVZ"/>) and the stamina cost
+    /// (<see cref="IMotionWeenie.JumpStaminaCost"/>) both come from it.</param>
+    /// <param name="staminaCost">The stamina the jump costs (0 with no weenie or when refused).</param>
     /// <exception cref="System.ArgumentException"><paramref name="extent"/> is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentOutOfRangeException"><paramref name="extent"/> is outside [0, 1] (nothing changes):
+    /// retail's launch speed clamps the extent to 1 but its stamina cost does not, so a larger extent would jump as 1 and
+    /// cost more.</exception>
     // retail: CMotionInterp::jump (acclient.c:344223)
-    public int Jump(float extent, out int staminaCost)
+    public MotionError Jump(float extent, out int staminaCost)
     {
-        if (!float.IsFinite(extent))
-        {
-            throw new System.ArgumentException("The jump extent must be finite.", nameof(extent));
-        }
+        CheckJumpExtent(extent);
 
         staminaCost = 0;
         PhysicsObj? obj = _physicsObj;
@@ -174,7 +186,7 @@ public sealed partial class MotionInterp
 
         obj.Touch();
         obj.CancelMoveTo();
-        int result = JumpIsAllowed(extent, out staminaCost);
+        MotionError result = JumpIsAllowed(extent, out staminaCost);
         if (result != MotionError.None)
         {
             StandingLongJump = false;
@@ -184,6 +196,22 @@ public sealed partial class MotionInterp
         JumpExtent = extent;
         obj.SetOnWalkable(false);
         return result;
+    }
+
+    // non-retail: the extent is checked at the public entry. Retail's caller only passes the power bar's level (0..1);
+    // get_jump_v_z clamps to 1 but JumpStaminaCost does not, so an extent above 1 would jump as 1 and cost as given.
+    private static void CheckJumpExtent(float extent)
+    {
+        if (!float.IsFinite(extent))
+        {
+            throw new System.ArgumentException("The jump extent must be finite.", nameof(extent));
+        }
+
+        if (extent < 0f || extent > 1f)
+        {
+            throw new System.ArgumentOutOfRangeException(nameof(extent), extent,
+                "The jump extent is the power bar's level, 0..1 (a larger extent would jump as 1 and cost stamina as given).");
+        }
     }
 
     /// <summary>
@@ -208,7 +236,7 @@ public sealed partial class MotionInterp
     /// <summary>The object landed: a creature with gravity drops its link animations and re-applies its movement (so a
     /// run that was recorded in the air starts now).</summary>
     // retail: CMotionInterp::HitGround (acclient.c:344428)
-    public void HitGround()
+    internal void HitGround()
     {
         PhysicsObj? obj = _physicsObj;
         if (obj is null || (_weenieObj is not null && !_weenieObj.IsCreature) || !HasGravity(obj))
@@ -223,7 +251,7 @@ public sealed partial class MotionInterp
     /// <summary>The object left the ground: a creature with gravity takes its leave-ground velocity (the jump), the jump
     /// charge and standing long jump end, and the movement is re-applied (Falling).</summary>
     // retail: CMotionInterp::LeaveGround (acclient.c:344456)
-    public void LeaveGround()
+    internal void LeaveGround()
     {
         PhysicsObj? obj = _physicsObj;
         if (obj is null || (_weenieObj is not null && !_weenieObj.IsCreature) || !HasGravity(obj))

@@ -120,12 +120,14 @@ public sealed partial class MotionInterp : IMotionInterpreter
         return m;
     }
 
-    /// <summary>The error a motion gives a jump: 0x48 while crouching, sitting, sleeping, fallen or in the poses
+    /// <summary>The error <paramref name="motion"/> gives a jump: <see cref="MotionError.YouCantJumpFromThisPosition"/> while crouching, sitting,
+    /// sleeping, fallen or in the poses
     /// 0x4000001E..0x40000039, 0x40000016..0x40000018 and the actions 0x1000006F..0x10000078, 0x10000128..0x10000131;
-    /// else 0.</summary>
+    /// else <see cref="MotionError.None"/>.</summary>
     // retail: CMotionInterp::motion_allows_jump (acclient.c:343294)
-    public static int MotionAllowsJump(uint substate)
+    public static MotionError MotionAllowsJump(MotionCommand motion)
     {
+        uint substate = (uint)motion;
         if (substate > 0x40000018u)
         {
             if (substate > 0x41000014u || (substate < 0x41000012u && (substate < 0x4000001Eu || substate > 0x40000039u)))
@@ -137,7 +139,7 @@ public sealed partial class MotionInterp : IMotionInterpreter
         {
             if (substate > 0x10000131u)
             {
-                if (substate != MotionCommand.Fallen)
+                if (substate != (uint)MotionCommand.Fallen)
                 {
                     return MotionError.None;
                 }
@@ -153,7 +155,7 @@ public sealed partial class MotionInterp : IMotionInterpreter
 
     /// <summary>The current style.</summary>
     // retail: CMotionInterp::InqStyle (acclient.c:343366)
-    public uint InqStyle() => InterpretedState.CurrentStyle;
+    public MotionCommand InqStyle() => InterpretedState.CurrentStyle;
 
     /// <summary>True while started motions are unfinished.</summary>
     // retail: CMotionInterp::motions_pending (acclient.c:343728)
@@ -164,8 +166,8 @@ public sealed partial class MotionInterp : IMotionInterpreter
     public bool IsStandingStill() =>
         _physicsObj is not null && OnGround(_physicsObj)
         && InterpretedState.ForwardCommand == MotionCommand.Ready
-        && InterpretedState.SidestepCommand == 0
-        && InterpretedState.TurnCommand == 0;
+        && InterpretedState.SidestepCommand == MotionCommand.None
+        && InterpretedState.TurnCommand == MotionCommand.None;
 
     /// <summary>The largest speed the character can run, m/s: 4 times the run rate (4 with no weenie).</summary>
     // retail: CMotionInterp::get_max_speed (acclient.c:343485)
@@ -302,7 +304,7 @@ public sealed partial class MotionInterp : IMotionInterpreter
     internal static bool HasGravity(PhysicsObj obj) => (obj.State & PhysicsState.Gravity) != 0;
 
     // retail: CMotionInterp::add_to_queue (acclient.c:343405)
-    private void AddToQueue(uint contextId, uint motion, int jumpErrorCode) =>
+    private void AddToQueue(uint contextId, MotionCommand motion, MotionError jumpErrorCode) =>
         PendingMotions.Add(new MotionNode(contextId, motion, jumpErrorCode));
 
     /// <summary>The local velocity of <paramref name="obj"/>'s global velocity, evaluated as retail's leave-ground branch

@@ -33,7 +33,7 @@ public static class MovementEvent
             return false;
         }
 
-        MotionInterp m = mm.GetMinterp();
+        MotionInterp m = mm.GetOrCreateMotionInterpreter();
         obj.CancelMoveTo();
         obj.UnstickFromObject();
         if (m.InqStyle() != state.CurrentStyle)

@@ -8,7 +8,18 @@ namespace AcDream.Core.Physics.Motion;
 /// <param name="Style">The style the object is in (full command).</param>
 /// <param name="StickToObject">The object to stick to (0 when none).</param>
 /// <param name="StandingLongJump">The object is charging a standing long jump.</param>
-public readonly record struct MovementEventHeader(byte MovementType, uint Style, uint StickToObject, bool StandingLongJump);
+public readonly record struct MovementEventHeader(byte MovementType, MotionCommand Style, uint StickToObject, bool StandingLongJump)
+{
+    // Commands print by name (an unnamed one as its hex id), object ids in hex.
+    private bool PrintMembers(System.Text.StringBuilder builder)
+    {
+        builder.Append("MovementType = ").Append(MovementType)
+               .Append(", Style = ").Append(MotionCommandText.Format(Style))
+               .Append(", StickToObject = 0x").Append(StickToObject.ToString("X8", System.Globalization.CultureInfo.InvariantCulture))
+               .Append(", StandingLongJump = ").Append(StandingLongJump);
+        return true;
+    }
+}
 
 /// <summary>
 /// Decodes the movement data of a MovementEvent (0xF74C) of movement type 0 (retail <c>MovementManager::unpack_movement</c>
@@ -35,7 +46,7 @@ public static class MovementEventDecoder
 
         ushort word = BinaryPrimitives.ReadUInt16LittleEndian(data);
         ushort styleIndex = BinaryPrimitives.ReadUInt16LittleEndian(data[2..]);
-        if (!MotionCommandIds.TryGet(styleIndex, out uint style))
+        if (!MotionCommandIds.TryGet(styleIndex, out MotionCommand style))
         {
             return false;
         }
@@ -85,7 +96,7 @@ public static class MovementEventDecoder
 
         uint flags = BinaryPrimitives.ReadUInt32LittleEndian(data[offset..]);
         offset += 4;
-        uint cmd;
+        MotionCommand cmd;
         if ((flags & 0x1) != 0)
         {
             if (!ReadCommand(data, ref offset, out cmd))
@@ -180,9 +191,9 @@ public static class MovementEventDecoder
         return offset <= data.Length;
     }
 
-    private static bool ReadCommand(ReadOnlySpan<byte> data, ref int offset, out uint command)
+    private static bool ReadCommand(ReadOnlySpan<byte> data, ref int offset, out MotionCommand command)
     {
-        command = 0;
+        command = MotionCommand.None;
         if (offset + 2 > data.Length)
         {
             return false;

@@ -8,8 +8,10 @@ namespace AcDream.Core.Physics.Motion;
 /// An object's movement manager (retail <c>MovementManager</c>, PORTAL/canim/CMovementManager.c): it owns the motion
 /// interpreter (created on first use, in its default state) and the move-to manager (a seam, <see cref="IMoveToManager"/>),
 /// routes the ground events to both, and runs the player's motion commands. This is what an object gets when the physics
-/// first needs one (<see cref="PhysicsObj.GetMinterp"/>, <see cref="PhysicsObj.MakeMovementManager"/>), unless the world
-/// has a <see cref="Objects.Seams.IMovementManagerFactory"/>.
+/// first needs one (<see cref="PhysicsObj.GetOrCreateMotionInterpreter"/>, <see cref="PhysicsObj.MakeMovementManager"/>),
+/// unless the world has a <see cref="Objects.Seams.IMovementManagerFactory"/>; <see cref="PhysicsObj.Movement"/> holds it.
+/// The engine's callbacks (<see cref="IMovementManager"/>'s ground events, per-step update and finished motions) are
+/// implemented explicitly: a client does not call them.
 /// </summary>
 public sealed class MovementManager : IMovementManager
 {
@@ -30,11 +32,15 @@ public sealed class MovementManager : IMovementManager
     /// <summary>The move-to manager, or null (retail creates one for a move-to; not ported).</summary>
     public IMoveToManager? MoveToManager { get; set; }
 
-    /// <summary>True once the interpreter exists.</summary>
-    public bool HasMotionInterpreter => _motionInterpreter is not null;
+    /// <summary>The motion interpreter, or null until created (by <see cref="GetOrCreateMotionInterpreter"/>,
+    /// <see cref="EnterDefaultState"/> or any motion call). Never creates it.</summary>
+    public MotionInterp? MotionInterpreter => _motionInterpreter;
 
     /// <inheritdoc />
-    IMotionInterpreter? IMovementManager.MotionInterpreter => GetMinterp();
+    IMotionInterpreter? IMovementManager.MotionInterpreter => _motionInterpreter;
+
+    /// <inheritdoc />
+    IMotionInterpreter? IMovementManager.GetOrCreateMotionInterpreter() => GetOrCreateMotionInterpreter();
 
     /// <summary>Creates the movement manager of <paramref name="physicsObj"/> (no interpreter yet).</summary>
     // retail: MovementManager::Create (acclient.c:339131)
@@ -50,9 +56,11 @@ public sealed class MovementManager : IMovementManager
                ?? throw new InvalidOperationException("The object's movement manager is not the retail MovementManager.");
     }
 
-    /// <summary>The motion interpreter, creating it in its default state when absent.</summary>
+    /// <summary>The motion interpreter, creating it (in its default state when the manager has an object) when absent
+    /// (retail <c>MovementManager::get_minterp</c>).</summary>
+    /// <returns>The interpreter, never null.</returns>
     // retail: MovementManager::get_minterp (acclient.c:339329)
-    public MotionInterp GetMinterp()
+    public MotionInterp GetOrCreateMotionInterpreter()
     {
         if (_motionInterpreter is null)
         {
@@ -85,16 +93,16 @@ public sealed class MovementManager : IMovementManager
         }
 
         // A new interpreter enters its default state in get_minterp, then again here (retail does both).
-        GetMinterp().EnterDefaultState();
+        GetOrCreateMotionInterpreter().EnterDefaultState();
     }
 
     /// <summary>The raw motion state (creating the interpreter).</summary>
     // retail: MovementManager::InqRawMotionState (acclient.c:339273)
-    public RawMotionState InqRawMotionState() => GetMinterp().RawState;
+    public RawMotionState InqRawMotionState() => GetOrCreateMotionInterpreter().RawState;
 
     /// <summary>The interpreted motion state (creating the interpreter).</summary>
     // retail: MovementManager::InqInterpretedMotionState (acclient.c:339292)
-    public InterpretedMotionState InqInterpretedMotionState() => GetMinterp().InterpretedState;
+    public InterpretedMotionState InqInterpretedMotionState() => GetOrCreateMotionInterpreter().InterpretedState;
 
     /// <summary>Applies a whole interpreted state from the server (creating the interpreter).</summary>
     /// <exception cref="ArgumentNullException"><paramref name="state"/> is null.</exception>
@@ -102,62 +110,62 @@ public sealed class MovementManager : IMovementManager
     public void MoveToInterpretedState(InterpretedMotionState state)
     {
         ArgumentNullException.ThrowIfNull(state);
-        GetMinterp().MoveToInterpretedState(state);
+        GetOrCreateMotionInterpreter().MoveToInterpretedState(state);
     }
 
     /// <summary>Starts a command as the player gives it (<see cref="MotionInterp.DoMotion"/>), then takes the finished motions.</summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     /// <remarks>The object's <see cref="Objects.PhysicsObj.LastMoveWasAutonomous"/> becomes true first, as
     /// <c>CPhysicsObj::DoMotion</c> (acclient.c:317314) sets it: this client's own commands.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 1 -> CMotionInterp::PerformMovement (acclient.c:344669)
-    public int DoMotion(uint motion, in MovementParameters p)
+    public MotionError DoMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
         MarkAutonomous();
         Activate();
-        int r = GetMinterp().DoMotion(motion, p);
+        MotionError r = GetOrCreateMotionInterpreter().DoMotion(motion, p);
         PhysicsObj?.CheckForCompletedMotions();
         return r;
     }
 
     /// <summary>Starts an interpreted motion (<see cref="MotionInterp.DoInterpretedMotion"/>), then takes the finished motions.</summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 2
-    public int DoInterpretedMotion(uint motion, in MovementParameters p)
+    public MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
         Activate();
-        int r = GetMinterp().DoInterpretedMotion(motion, p);
+        MotionError r = GetOrCreateMotionInterpreter().DoInterpretedMotion(motion, p);
         PhysicsObj?.CheckForCompletedMotions();
         return r;
     }
 
     /// <summary>Stops a command as the player gives it (<see cref="MotionInterp.StopMotion"/>), then takes the finished motions.</summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     /// <remarks>Marks the move autonomous first, as <c>CPhysicsObj::StopMotion</c> (acclient.c:317353) does.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 3
-    public int StopMotion(uint motion, in MovementParameters p)
+    public MotionError StopMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
         MarkAutonomous();
         Activate();
-        int r = GetMinterp().StopMotion(motion, p);
+        MotionError r = GetOrCreateMotionInterpreter().StopMotion(motion, p);
         PhysicsObj?.CheckForCompletedMotions();
         return r;
     }
 
     /// <summary>Stops an interpreted motion, then takes the finished motions.</summary>
-    /// <returns>0 on success, else a <see cref="MotionError"/> number.</returns>
-    /// <exception cref="ArgumentException">The speed is NaN or infinite (nothing changes).</exception>
+    /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 4
-    public int StopInterpretedMotion(uint motion, in MovementParameters p)
+    public MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
         Activate();
-        int r = GetMinterp().StopInterpretedMotion(motion, p);
+        MotionError r = GetOrCreateMotionInterpreter().StopInterpretedMotion(motion, p);
         PhysicsObj?.CheckForCompletedMotions();
         return r;
     }
@@ -167,7 +175,7 @@ public sealed class MovementManager : IMovementManager
     public void StopCompletely()
     {
         Activate();
-        GetMinterp().StopCompletely();
+        GetOrCreateMotionInterpreter().StopCompletely();
         PhysicsObj?.CheckForCompletedMotions();
     }
 
@@ -191,15 +199,15 @@ public sealed class MovementManager : IMovementManager
 
     /// <inheritdoc />
     // retail: MovementManager::MotionDone (acclient.c:339348)
-    public void MotionDone(uint motion, bool success) => _motionInterpreter?.MotionDone(success);
+    void IMovementManager.MotionDone(MotionCommand motion, bool success) => _motionInterpreter?.MotionDone(success);
 
     /// <inheritdoc />
     // retail: MovementManager::UseTime (acclient.c:339358)
-    public void UseTime() => MoveToManager?.UseTime();
+    void IMovementManager.UseTime() => MoveToManager?.UseTime();
 
     /// <inheritdoc />
     // retail: MovementManager::HitGround (acclient.c:339368)
-    public void HitGround()
+    void IMovementManager.HitGround()
     {
         _motionInterpreter?.HitGround();
         MoveToManager?.HitGround();
@@ -207,17 +215,17 @@ public sealed class MovementManager : IMovementManager
 
     /// <inheritdoc />
     // retail: MovementManager::LeaveGround (acclient.c:339384); the move-to manager's LeaveGround is empty
-    public void LeaveGround() => _motionInterpreter?.LeaveGround();
+    void IMovementManager.LeaveGround() => _motionInterpreter?.LeaveGround();
 
     /// <inheritdoc />
     // retail: MovementManager::HandleEnterWorld (acclient.c:339400): the interpreter's HandleEnterWorld is empty
-    public void HandleEnterWorld()
+    void IMovementManager.HandleEnterWorld()
     {
     }
 
-    /// <summary>The object left the world: the interpreter finishes its pending motions.</summary>
+    /// <summary>The object left the world: the interpreter finishes its pending motions (engine callback).</summary>
     // retail: MovementManager::HandleExitWorld (acclient.c:339410)
-    public void HandleExitWorld() => _motionInterpreter?.HandleExitWorld();
+    internal void HandleExitWorld() => _motionInterpreter?.HandleExitWorld();
 
     /// <summary>The stamina ran out or came back: the interpreter re-applies its movement.</summary>
     // retail: MovementManager::ReportExhaustion (acclient.c:339420)
@@ -225,5 +233,5 @@ public sealed class MovementManager : IMovementManager
 
     /// <inheritdoc />
     // retail: MovementManager::CancelMoveTo (acclient.c:339239)
-    public void CancelMoveTo(uint error) => MoveToManager?.CancelMoveTo(error);
+    void IMovementManager.CancelMoveTo(MotionError error) => MoveToManager?.CancelMoveTo(error);
 }

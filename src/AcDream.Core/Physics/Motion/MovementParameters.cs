@@ -66,7 +66,10 @@ public enum MovementParameterFlags : uint
 
 /// <summary>
 /// The parameters of one motion command (retail <c>MovementParameters</c>). <c>new MovementParameters()</c> gives retail's
-/// defaults (its constructor, acclient.c:339436); <c>default</c> gives all zeros, which is not a retail value.
+/// defaults (its constructor, acclient.c:339436); <c>default(MovementParameters)</c> gives all zeros (speed 0, no flags),
+/// which is not a retail value: every motion entry that takes parameters (<c>DoMotion</c>, <c>StopMotion</c>,
+/// <c>DoInterpretedMotion</c>, <c>StopInterpretedMotion</c>, the states' <c>ApplyMotion</c>) refuses it with an
+/// <see cref="System.ArgumentException"/>. A value with any field set is accepted (speed 0 and no flags are legal alone).
 /// </summary>
 public struct MovementParameters
 {
@@ -120,6 +123,19 @@ public struct MovementParameters
 
     /// <summary>Server action stamp of an action.</summary>
     public uint ActionStamp;
+
+    /// <summary>Every field is zero: <c>default(MovementParameters)</c>, which the motion API refuses.</summary>
+    internal readonly bool IsAllZero =>
+        Flags == MovementParameterFlags.None && DistanceToObject == 0f && MinDistance == 0f && DesiredHeading == 0f
+        && Speed == 0f && FailDistance == 0f && WalkRunThreshold == 0f && ContextId == 0 && HoldKeyToApply == HoldKey.Invalid
+        && ActionStamp == 0;
+
+    /// <summary>Every field by name (the flags by their names).</summary>
+    public readonly override string ToString() => string.Create(System.Globalization.CultureInfo.InvariantCulture,
+        $"MovementParameters {{ Flags = {Flags}, Speed = {Speed}, HoldKeyToApply = {HoldKeyToApply}, "
+        + $"DistanceToObject = {DistanceToObject}, MinDistance = {MinDistance}, DesiredHeading = {DesiredHeading}, "
+        + $"FailDistance = {FailDistance}, WalkRunThreshold = {WalkRunThreshold}, ContextId = {ContextId}, "
+        + $"ActionStamp = {ActionStamp} }}");
 
     internal readonly bool Has(MovementParameterFlags f) => (Flags & f) != 0;
 }

@@ -3,8 +3,19 @@ namespace AcDream.Core.Physics.Motion;
 /// <summary>One started motion waiting for its animation to finish (retail <c>CMotionInterp::MotionNode</c>).</summary>
 /// <param name="ContextId">The context id it was started with.</param>
 /// <param name="Motion">The motion (Ready for a stop).</param>
-/// <param name="JumpErrorCode">Nonzero when a jump is not allowed until it finishes (the error a jump then returns).</param>
-public readonly record struct MotionNode(uint ContextId, uint Motion, int JumpErrorCode);
+/// <param name="JumpErrorCode">Not <see cref="MotionError.None"/> when a jump is not allowed until it finishes (the error a
+/// jump then returns).</param>
+public readonly record struct MotionNode(uint ContextId, MotionCommand Motion, MotionError JumpErrorCode)
+{
+    // The command prints by name (an unnamed one as its hex id).
+    private bool PrintMembers(System.Text.StringBuilder builder)
+    {
+        builder.Append("ContextId = ").Append(ContextId)
+               .Append(", Motion = ").Append(MotionCommandText.Format(Motion))
+               .Append(", JumpErrorCode = ").Append(JumpErrorCode);
+        return true;
+    }
+}
 
 /// <summary>
 /// The interpreter's list of started motions not yet finished (retail <c>CMotionInterp::pending_motions</c>), first in

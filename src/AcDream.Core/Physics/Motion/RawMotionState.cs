@@ -14,10 +14,10 @@ public sealed class RawMotionState
     public HoldKey CurrentHoldKey { get; set; }
 
     /// <summary>The stance (style command).</summary>
-    public uint CurrentStyle { get; set; }
+    public MotionCommand CurrentStyle { get; set; }
 
     /// <summary>The forward command as given (Ready, WalkForward, WalkBackwards...).</summary>
-    public uint ForwardCommand { get; set; }
+    public MotionCommand ForwardCommand { get; set; }
 
     /// <summary>The hold key given with the forward command (<see cref="HoldKey.Invalid"/>: the current one).</summary>
     public HoldKey ForwardHoldKey { get; set; }
@@ -33,7 +33,7 @@ public sealed class RawMotionState
     private float _forwardSpeed;
 
     /// <summary>The side-step command as given (0, SideStepRight or SideStepLeft).</summary>
-    public uint SidestepCommand { get; set; }
+    public MotionCommand SidestepCommand { get; set; }
 
     /// <summary>The hold key given with the side-step.</summary>
     public HoldKey SidestepHoldKey { get; set; }
@@ -49,7 +49,7 @@ public sealed class RawMotionState
     private float _sidestepSpeed;
 
     /// <summary>The turn command as given (0, TurnRight or TurnLeft).</summary>
-    public uint TurnCommand { get; set; }
+    public MotionCommand TurnCommand { get; set; }
 
     /// <summary>The hold key given with the turn.</summary>
     public HoldKey TurnHoldKey { get; set; }
@@ -75,10 +75,10 @@ public sealed class RawMotionState
         ForwardCommand = MotionCommand.Ready;
         ForwardHoldKey = HoldKey.Invalid;
         ForwardSpeed = 1f;
-        SidestepCommand = 0;
+        SidestepCommand = MotionCommand.None;
         SidestepHoldKey = HoldKey.Invalid;
         SidestepSpeed = 1f;
-        TurnCommand = 0;
+        TurnCommand = MotionCommand.None;
         TurnHoldKey = HoldKey.Invalid;
         TurnSpeed = 1f;
         Actions.Clear();
@@ -103,9 +103,12 @@ public sealed class RawMotionState
     }
 
     /// <summary>Records a started command with its hold key (none when the parameters set the hold key).</summary>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed
+    /// is NaN or infinite (state unchanged).</exception>
     // retail: RawMotionState::ApplyMotion (acclient.c:332851)
-    public void ApplyMotion(uint motion, in MovementParameters p)
+    public void ApplyMotion(MotionCommand motion, in MovementParameters p)
     {
+        MotionChecks.Check(p);
         HoldKey key = p.Has(MovementParameterFlags.SetHoldKey) ? HoldKey.Invalid : p.HoldKeyToApply;
         switch (motion)
         {
@@ -122,7 +125,7 @@ public sealed class RawMotionState
                 TurnSpeed = p.Speed;
                 break;
             default:
-                if ((motion & MotionCommand.SubstateMask) != 0)
+                if (((uint)motion & (uint)MotionCommandClass.Substate) != 0)
                 {
                     if (motion != MotionCommand.RunForward)
                     {
@@ -131,9 +134,9 @@ public sealed class RawMotionState
                         ForwardSpeed = p.Speed;
                     }
                 }
-                else if ((motion & MotionCommand.StyleMask) == 0)
+                else if (((uint)motion & (uint)MotionCommandClass.Style) == 0)
                 {
-                    if ((motion & MotionCommand.ActionMask) != 0)
+                    if (((uint)motion & (uint)MotionCommandClass.Action) != 0)
                     {
                         AddAction(motion, p.Speed, p.ActionStamp, p.Has(MovementParameterFlags.Autonomous));
                     }
@@ -150,20 +153,20 @@ public sealed class RawMotionState
 
     /// <summary>Records a stopped command.</summary>
     // retail: RawMotionState::RemoveMotion (acclient.c:332494)
-    public void RemoveMotion(uint motion)
+    public void RemoveMotion(MotionCommand motion)
     {
         switch (motion)
         {
             case MotionCommand.SideStepRight:
             case MotionCommand.SideStepLeft:
-                SidestepCommand = 0;
+                SidestepCommand = MotionCommand.None;
                 break;
             case MotionCommand.TurnRight:
             case MotionCommand.TurnLeft:
-                TurnCommand = 0;
+                TurnCommand = MotionCommand.None;
                 break;
             default:
-                if ((motion & MotionCommand.SubstateMask) != 0)
+                if (((uint)motion & (uint)MotionCommandClass.Substate) != 0)
                 {
                     if (motion == ForwardCommand)
                     {
@@ -171,7 +174,7 @@ public sealed class RawMotionState
                         ForwardSpeed = 1f;
                     }
                 }
-                else if ((motion & MotionCommand.StyleMask) != 0 && motion == CurrentStyle)
+                else if (((uint)motion & (uint)MotionCommandClass.Style) != 0 && motion == CurrentStyle)
                 {
                     CurrentStyle = MotionCommand.NonCombat;
                 }
@@ -182,10 +185,17 @@ public sealed class RawMotionState
 
     /// <summary>Queues an action.</summary>
     // retail: RawMotionState::AddAction (acclient.c:332581)
-    public void AddAction(uint action, float speed, uint stamp, bool autonomous) =>
+    public void AddAction(MotionCommand action, float speed, uint stamp, bool autonomous) =>
         Actions.Add(new ActionNode(action, speed, stamp, autonomous));
 
-    /// <summary>Removes the oldest action and returns its command (0 when none).</summary>
+    /// <summary>Removes the oldest action and returns its command (<see cref="MotionCommand.None"/> when none).</summary>
     // retail: RawMotionState::RemoveAction (acclient.c:332615)
-    public uint RemoveAction() => Actions.RemoveFirst();
+    public MotionCommand RemoveAction() => Actions.RemoveFirst();
+
+    /// <summary>The state's commands by name (an unnamed one as its hex id), their speeds and the number of queued actions.</summary>
+    public override string ToString() => string.Create(System.Globalization.CultureInfo.InvariantCulture,
+        $"RawMotionState {{ CurrentHoldKey = {CurrentHoldKey}, CurrentStyle = {MotionCommandText.Format(CurrentStyle)}, "
+        + $"ForwardCommand = {MotionCommandText.Format(ForwardCommand)}, ForwardSpeed = {ForwardSpeed}, "
+        + $"SidestepCommand = {MotionCommandText.Format(SidestepCommand)}, SidestepSpeed = {SidestepSpeed}, "
+        + $"TurnCommand = {MotionCommandText.Format(TurnCommand)}, TurnSpeed = {TurnSpeed}, Actions = {Actions.Count} }}");
 }

@@ -25,11 +25,11 @@ public sealed class RetailSpeedMotionTable : IMotionTable
     public const float TurnAnimSpeed = 1.5707964f;
 
     private const int CompletedCapacity = 32;
-    private readonly uint[] _completed = new uint[CompletedCapacity];
+    private readonly MotionCommand[] _completed = new MotionCommand[CompletedCapacity];
     private int _completedHead;
     private int _completedCount;
-    private uint _style = MotionCommand.NonCombat;
-    private uint _substate = MotionCommand.Ready;
+    private MotionCommand _style = MotionCommand.NonCombat;
+    private MotionCommand _substate = MotionCommand.Ready;
     private float _substateMod = 1f;
     private float _sidestepMod;
     private bool _sidestep;
@@ -37,10 +37,10 @@ public sealed class RetailSpeedMotionTable : IMotionTable
     private bool _turn;
 
     /// <summary>The current style.</summary>
-    public uint Style => _style;
+    public MotionCommand Style => _style;
 
     /// <summary>The current substate (cycle).</summary>
-    public uint Substate => _substate;
+    public MotionCommand Substate => _substate;
 
     /// <summary>The current substate's speed.</summary>
     public float SubstateSpeed => _substateMod;
@@ -52,7 +52,7 @@ public sealed class RetailSpeedMotionTable : IMotionTable
     public Vector3 Omega { get; private set; }
 
     /// <inheritdoc />
-    public int DoInterpretedMotion(uint motion, in MovementParameters p)
+    public MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         float speed = p.Speed;
         // Side-step and turn first: their ids (0x65...) carry the substate bit too.
@@ -66,18 +66,18 @@ public sealed class RetailSpeedMotionTable : IMotionTable
             _turn = true;
             _turnMod = speed;
         }
-        else if ((motion & MotionCommand.StyleMask) != 0)
+        else if (((uint)motion & (uint)MotionCommandClass.Style) != 0)
         {
             _style = motion;
             _substate = MotionCommand.Ready;
             _substateMod = 1f;
         }
-        else if ((motion & MotionCommand.SubstateMask) != 0)
+        else if (((uint)motion & (uint)MotionCommandClass.Substate) != 0)
         {
             _substate = motion;
             _substateMod = speed;
         }
-        else if ((motion & MotionCommand.ActionMask) == 0)
+        else if (((uint)motion & (uint)MotionCommandClass.Action) == 0)
         {
             return MotionError.GeneralMovementFailure;
         }
@@ -88,7 +88,7 @@ public sealed class RetailSpeedMotionTable : IMotionTable
     }
 
     /// <inheritdoc />
-    public int StopInterpretedMotion(uint motion, in MovementParameters p)
+    public MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         if (motion == MotionCommand.SideStepRight && _sidestep)
         {
@@ -98,7 +98,7 @@ public sealed class RetailSpeedMotionTable : IMotionTable
         {
             _turn = false;
         }
-        else if ((motion & MotionCommand.SubstateMask) != 0 && motion == _substate)
+        else if (((uint)motion & (uint)MotionCommandClass.Substate) != 0 && motion == _substate)
         {
             _substate = MotionCommand.Ready;
             _substateMod = 1f;
@@ -114,7 +114,7 @@ public sealed class RetailSpeedMotionTable : IMotionTable
     }
 
     /// <inheritdoc />
-    public int StopCompletely()
+    public MotionError StopCompletely()
     {
         _substate = MotionCommand.Ready;
         _substateMod = 1f;
@@ -144,7 +144,7 @@ public sealed class RetailSpeedMotionTable : IMotionTable
     }
 
     /// <inheritdoc />
-    public bool TryTakeCompletedMotion(out uint motion, out bool success)
+    public bool TryTakeCompletedMotion(out MotionCommand motion, out bool success)
     {
         success = true;
         if (_completedCount == 0)
@@ -159,7 +159,7 @@ public sealed class RetailSpeedMotionTable : IMotionTable
         return true;
     }
 
-    private void Complete(uint motion)
+    private void Complete(MotionCommand motion)
     {
         // non-retail: a bounded completion queue; when full the oldest completion is dropped (it is long past).
         if (_completedCount == CompletedCapacity)

@@ -22,7 +22,7 @@ public enum ObjectSetupIssues
 
     /// <summary>No movement manager: each step that begins at rest on walkable ground deactivates the object, and only the
     /// world's player wakes it again (within 96 m): near the player it walks at half speed, in a world without a player it
-    /// takes one step and stops. <see cref="PhysicsObj.GetMinterp"/> creates one; the world's player gets one when it is
+    /// takes one step and stops. <see cref="PhysicsObj.GetOrCreateMotionInterpreter"/> creates one; the world's player gets one when it is
     /// set.</summary>
     NoMovementManager = 1 << 2,
 
@@ -37,4 +37,10 @@ public enum ObjectSetupIssues
 
     /// <summary>The object is not in a cell (never entered the world, or could not be placed): the tick skips it.</summary>
     NotInCell = 1 << 5,
+
+    /// <summary>A part array without a motion table (<see cref="Parts.IPartArray.MotionTable"/> null) while the object moves
+    /// through retail's movement manager (or has none yet): the motion commands (<c>DoMotion(WalkForward)</c>...) reach no
+    /// motion table, so the object does not walk, run or turn. Give the part array one, e.g.
+    /// <see cref="Motion.RetailSpeedMotionTable"/>. Not reported for an object whose movement manager is a client's own.</summary>
+    NoMotionTable = 1 << 6,
 }

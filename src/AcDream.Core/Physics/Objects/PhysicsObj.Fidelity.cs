@@ -84,7 +84,7 @@ public sealed partial class PhysicsObj
         float mag2 = v.X * v.X + v.Y * v.Y + v.Z * v.Z;
         if (mag2 <= 0.0f)
         {
-            if (MovementManager is null && (_transientState & TransientState.OnWalkable) != 0)
+            if (Movement is null && (_transientState & TransientState.OnWalkable) != 0)
             {
                 _transientState &= ~TransientState.Active;
             }

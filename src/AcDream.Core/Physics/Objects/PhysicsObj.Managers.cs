@@ -18,26 +18,34 @@ public sealed partial class PhysicsObj
         return PositionManager;
     }
 
+    /// <summary>The motion interpreter of the object's movement manager, or null while it has none (no movement manager,
+    /// or one that has not created its interpreter yet). Never creates anything: <see cref="GetOrCreateMotionInterpreter"/>
+    /// does.</summary>
+    public IMotionInterpreter? MotionInterpreter => Movement?.MotionInterpreter;
+
     /// <summary>
-    /// The motion interpreter, creating a movement manager first when the object has none (retail <c>get_minterp</c>:
-    /// <c>MovementManager::Create</c> + <c>EnterDefaultState</c>, then activation). The world's
-    /// <see cref="PhysicsWorld.MovementManagerFactory"/> creates it, or the retail <see cref="Motion.MovementManager"/> when
-    /// unset.
+    /// The motion interpreter, creating the movement manager (in its default state) and its interpreter first when absent
+    /// (retail <c>CPhysicsObj::get_minterp</c>: <c>MovementManager::Create</c> + <c>EnterDefaultState</c>, then
+    /// activation). The world's <see cref="PhysicsWorld.MovementManagerFactory"/> creates the movement manager, or the
+    /// retail <see cref="Motion.MovementManager"/> when unset. Give every walking creature one (the world's player gets one
+    /// when it is set).
     /// </summary>
+    /// <returns>The interpreter: a <see cref="Motion.MotionInterp"/> for the retail movement manager; whatever a client's own
+    /// movement manager answers (<see cref="IMovementManager.GetOrCreateMotionInterpreter"/>, possibly null).</returns>
     // retail: CPhysicsObj::get_minterp (acclient.c:319279)
-    public IMotionInterpreter? GetMinterp()
+    public IMotionInterpreter? GetOrCreateMotionInterpreter()
     {
-        if (MovementManager is null)
+        if (Movement is null)
         {
             MakeMovementManager(true);
         }
 
-        return MovementManager!.MotionInterpreter;
+        return Movement!.GetOrCreateMotionInterpreter();
     }
 
     /// <summary>True while the movement manager runs a move-to.</summary>
     // retail: CPhysicsObj::IsMovingTo (acclient.c:315821)
-    public bool IsMovingTo() => MovementManager is not null && MovementManager.IsMovingTo();
+    public bool IsMovingTo() => Movement is not null && Movement.IsMovingTo();
 
     /// <summary>Queues an interpolation towards <paramref name="p"/> (creating the position manager).</summary>
     /// <param name="p">The target: the position domain of <see cref="StorePosition"/> (unit quaternion; origin within
@@ -159,5 +167,5 @@ public sealed partial class PhysicsObj
 
     /// <summary>Cancels the movement manager's move-to with the unstick error (<see cref="StickyManager.UnstickMoveToError"/>).</summary>
     // retail: CPhysicsObj::cancel_moveto (acclient.c:317420)
-    internal void CancelMoveTo() => MovementManager?.CancelMoveTo(StickyManager.UnstickMoveToError);
+    internal void CancelMoveTo() => Movement?.CancelMoveTo(StickyManager.UnstickMoveToError);
 }

@@ -17,17 +17,17 @@ public sealed partial class PhysicsObj
     public IMovementManager MakeMovementManager(bool initMotion)
     {
         Touch();
-        if (MovementManager is null)
+        if (Movement is null)
         {
             IMovementManager? custom = World.MovementManagerFactory?.Create(this);
             if (custom is not null)
             {
-                MovementManager = custom;
+                Movement = custom;
             }
             else
             {
                 var mm = Motion.MovementManager.Create(this, Weenie as IMotionWeenie);
-                MovementManager = mm;
+                Movement = mm;
                 if (initMotion)
                 {
                     mm.EnterDefaultState();
@@ -37,11 +37,11 @@ public sealed partial class PhysicsObj
             ActivateIfNotStatic();
         }
 
-        return MovementManager;
+        return Movement;
     }
 
     // retail: CPhysicsObj::DoInterpretedMotion (acclient.c:315752)
-    internal int DoInterpretedMotion(uint motion, in MovementParameters p)
+    internal MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         if (PartArray is null)
         {
@@ -54,7 +54,7 @@ public sealed partial class PhysicsObj
     }
 
     // retail: CPhysicsObj::StopInterpretedMotion (acclient.c:315765)
-    internal int StopInterpretedMotion(uint motion, in MovementParameters p)
+    internal MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
         if (PartArray is null)
         {
@@ -84,9 +84,9 @@ public sealed partial class PhysicsObj
             return;
         }
 
-        while (table.TryTakeCompletedMotion(out uint motion, out bool success))
+        while (table.TryTakeCompletedMotion(out MotionCommand motion, out bool success))
         {
-            MovementManager?.MotionDone(motion, success);
+            Movement?.MotionDone(motion, success);
         }
     }
 }

@@ -1,5 +1,6 @@
 using System;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Objects;
 
@@ -96,7 +97,7 @@ public sealed partial class PhysicsObj
     public void TeleportHook()
     {
         Touch();
-        MovementManager?.CancelMoveTo(0x3Cu);
+        Movement?.CancelMoveTo(MotionError.ITeleported);
         PositionManager?.UnStick();
         PositionManager?.StopInterpolating();
         PositionManager?.UnConstrain();

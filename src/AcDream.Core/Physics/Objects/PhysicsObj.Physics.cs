@@ -38,7 +38,7 @@ public sealed partial class PhysicsObj
         float mag2 = (float)((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
         if (mag2 <= 0.0f)
         {
-            if (MovementManager is null && (_transientState & TransientState.OnWalkable) != 0)
+            if (Movement is null && (_transientState & TransientState.OnWalkable) != 0)
             {
                 _transientState &= ~TransientState.Active;
             }
@@ -288,14 +288,14 @@ public sealed partial class PhysicsObj
 
         if (was)
         {
-            if (!onWalkable && MovementManager is not null)
+            if (!onWalkable && Movement is not null)
             {
-                MovementManager.LeaveGround();
+                Movement.LeaveGround();
             }
         }
         else if (onWalkable)
         {
-            MovementManager?.HitGround();
+            Movement?.HitGround();
         }
 
         CalcAcceleration();
@@ -312,7 +312,7 @@ public sealed partial class PhysicsObj
         _transientState &= ~(TransientState.OnWalkable | TransientState.WaterContact);
         if (wasOnWalkable)
         {
-            MovementManager?.LeaveGround();
+            Movement?.LeaveGround();
         }
 
         CalcAcceleration();

@@ -191,7 +191,7 @@ public sealed partial class PhysicsObj
         }
 
         PartArray?.HandleEnterWorld();
-        MovementManager?.HandleEnterWorld();
+        Movement?.HandleEnterWorld();
         return true;
     }
 
@@ -289,7 +289,7 @@ public sealed partial class PhysicsObj
             _transientState &= ~TransientState.OnWalkable;
             if (wasOnWalkable)
             {
-                MovementManager?.LeaveGround();
+                Movement?.LeaveGround();
             }
 
             CalcAcceleration();

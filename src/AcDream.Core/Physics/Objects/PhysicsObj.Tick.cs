@@ -175,7 +175,7 @@ public sealed partial class PhysicsObj
             else
             {
                 // No collision spheres: retail keeps the origin and takes only the new orientation.
-                if (MovementManager is null && (_transientState & TransientState.OnWalkable) != 0)
+                if (Movement is null && (_transientState & TransientState.OnWalkable) != 0)
                 {
                     _transientState &= ~TransientState.Active;
                 }
@@ -191,7 +191,7 @@ public sealed partial class PhysicsObj
             {
                 DetectionManager?.CheckDetection();
                 TargetManager?.HandleTargetting();
-                MovementManager?.UseTime();
+                Movement?.UseTime();
                 HandlePartArrayMovement();
             }
 

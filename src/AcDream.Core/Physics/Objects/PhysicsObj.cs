@@ -244,9 +244,12 @@ public sealed partial class PhysicsObj
         }
     }
 
-    /// <summary>The movement manager seam, or null (retail <c>movement_manager</c>). An object without one deactivates itself
-    /// when it rests on walkable ground.</summary>
-    public IMovementManager? MovementManager
+    /// <summary>The object's movement manager, or null (retail <c>movement_manager</c>): the retail
+    /// <see cref="Motion.MovementManager"/> (<c>obj.Movement is MovementManager mm</c>, or <see cref="Motion.MovementManager.Of"/>)
+    /// or a client's own <see cref="IMovementManager"/>. Null until <see cref="MakeMovementManager"/> or
+    /// <see cref="GetOrCreateMotionInterpreter"/> creates it; an object without one deactivates itself when it rests on
+    /// walkable ground.</summary>
+    public IMovementManager? Movement
     {
         get => _movementManager;
         set

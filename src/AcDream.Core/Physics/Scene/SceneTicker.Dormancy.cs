@@ -198,7 +198,7 @@ internal sealed partial class SceneTicker
     /// </summary>
     internal static bool IsIdle(PhysicsObj o)
     {
-        if (o.MovementManager is not null || o.DetectionManager is not null || o.TargetManager is not null
+        if (o.Movement is not null || o.DetectionManager is not null || o.TargetManager is not null
             || o.Hooks is not null || o.PendingAnimHookCount != 0 || (o.Children is not null && o.Children.Count != 0)
             || (o._state & PhysicsState.Hidden) != 0 || o.JumpedThisFrame
             || (o._transientState & TransientState.CheckEthereal) != 0)

@@ -127,7 +127,7 @@ public sealed partial class PhysicsWorld
 
     /// <summary>
     /// The player object (retail <c>CPhysicsObj::player_object</c>): objects measure their distance to it. Null for none.
-    /// Setting an object that has no movement manager gives it one through <see cref="PhysicsObj.GetMinterp"/> (so through
+    /// Setting an object that has no movement manager gives it one through <see cref="PhysicsObj.GetOrCreateMotionInterpreter"/> (so through
     /// <see cref="MovementManagerFactory"/> when set): retail's player always has one, and without it an object resting on
     /// walkable ground deactivates itself every other step and walks at half speed.
     /// </summary>
@@ -150,9 +150,9 @@ public sealed partial class PhysicsWorld
 
             // non-retail: the player is given its movement manager here (retail's client creates it when the command
             // interpreter first moves the player); see docs/divergences.md
-            if (value is not null && value.MovementManager is null)
+            if (value is not null && value.Movement is null)
             {
-                value.GetMinterp();
+                value.GetOrCreateMotionInterpreter();
             }
 
             _player = value;

@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
 
@@ -27,10 +28,10 @@ public sealed class StubMotion : IMovementManager, IMotionInterpreter, IMovement
     public bool MovingTo { get; set; }
 
     /// <summary>Error code of the last CancelMoveTo, or 0.</summary>
-    public uint LastCancel { get; private set; }
+    public MotionError LastCancel { get; private set; }
 
     /// <inheritdoc />
-    public void CancelMoveTo(uint error) => LastCancel = error;
+    public void CancelMoveTo(MotionError error) => LastCancel = error;
 
     /// <inheritdoc />
     public IMotionInterpreter? MotionInterpreter => HasInterpreter ? this : null;

@@ -78,15 +78,15 @@ public class MotionConstantsTests
     [Fact]
     public void CommandIds_AreRetailValues()
     {
-        Assert.Equal(0x41000003u, MotionCommand.Ready);
-        Assert.Equal(0x45000005u, MotionCommand.WalkForward);
-        Assert.Equal(0x45000006u, MotionCommand.WalkBackwards);
-        Assert.Equal(0x44000007u, MotionCommand.RunForward);
-        Assert.Equal(0x40000015u, MotionCommand.Falling);
-        Assert.Equal(0x6500000Du, MotionCommand.TurnRight);
-        Assert.Equal(0x6500000Eu, MotionCommand.TurnLeft);
-        Assert.Equal(0x6500000Fu, MotionCommand.SideStepRight);
-        Assert.Equal(0x65000010u, MotionCommand.SideStepLeft);
-        Assert.Equal(0x8000003Du, MotionCommand.NonCombat);
+        Assert.Equal(0x41000003u, (uint)MotionCommand.Ready);
+        Assert.Equal(0x45000005u, (uint)MotionCommand.WalkForward);
+        Assert.Equal(0x45000006u, (uint)MotionCommand.WalkBackwards);
+        Assert.Equal(0x44000007u, (uint)MotionCommand.RunForward);
+        Assert.Equal(0x40000015u, (uint)MotionCommand.Falling);
+        Assert.Equal(0x6500000Du, (uint)MotionCommand.TurnRight);
+        Assert.Equal(0x6500000Eu, (uint)MotionCommand.TurnLeft);
+        Assert.Equal(0x6500000Fu, (uint)MotionCommand.SideStepRight);
+        Assert.Equal(0x65000010u, (uint)MotionCommand.SideStepLeft);
+        Assert.Equal(0x8000003Du, (uint)MotionCommand.NonCombat);
     }
 }

@@ -18,7 +18,7 @@ public class MotionInterpJumpTests
         Assert.Equal(MotionError.YouCantJumpWhileInTheAir, mi.JumpIsAllowed(1f, out _));
         MotionFixture.SetOnGround(obj);
         // On the ground, standing: allowed, cost ceil((0 + 0.5) * 1 * 8 + 2) = 6.
-        Assert.Equal(0, mi.JumpIsAllowed(1f, out int cost));
+        Assert.Equal(MotionError.None, mi.JumpIsAllowed(1f, out int cost));
         Assert.Equal(6, cost);
     }
 
@@ -69,7 +69,7 @@ public class MotionInterpJumpTests
 
         // jump(1): allowed, extent recorded, set_on_walkable(0) -> LeaveGround: local velocity = state velocity (0, 9.5, 0)
         // with z = get_jump_v_z = 9.086529; then the extent is cleared and the table plays Falling.
-        Assert.Equal(0, mi.Jump(1f, out int cost));
+        Assert.Equal(MotionError.None, mi.Jump(1f, out int cost));
         Assert.Equal(6, cost);
         Assert.Equal(0f, mi.JumpExtent);
         Assert.Equal(9.5f, obj.Velocity.Y);
@@ -91,14 +91,14 @@ public class MotionInterpJumpTests
     {
         var (obj, mm, mi, table) = MotionFixture.Create(new PlayerWeenie { RunSkill = 200, JumpSkill = 300 }, gravity: true);
         MotionFixture.SetOnGround(obj);
-        Assert.Equal(0, mi.ChargeJump());
+        Assert.Equal(MotionError.None, mi.ChargeJump());
         Assert.True(mi.StandingLongJump);
         // While charging, a walk is recorded but not played (DoInterpretedMotion's standing_longjump branch).
         mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params());
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(Vector3.Zero, table.Velocity);
         // The jump launches with the recorded walk: (0, 3.12, vz(0.5) = 6.42515), and ends the long jump.
-        Assert.Equal(0, mi.Jump(0.5f, out _));
+        Assert.Equal(MotionError.None, mi.Jump(0.5f, out _));
         Assert.False(mi.StandingLongJump);
         Assert.Equal(3.12f, obj.Velocity.Y);
         Assert.Equal(6.425146, obj.Velocity.Z, 5);
@@ -120,20 +120,20 @@ public class MotionInterpJumpTests
     public void MotionAllowsJump_Table()
     {
         // motion_allows_jump (acclient.c:343294): 0x48 for the postures and poses, 0 otherwise.
-        Assert.Equal(0, MotionInterp.MotionAllowsJump(MotionCommand.Ready));
-        Assert.Equal(0, MotionInterp.MotionAllowsJump(MotionCommand.RunForward));
-        Assert.Equal(0, MotionInterp.MotionAllowsJump(MotionCommand.Falling));
-        Assert.Equal(0x48, MotionInterp.MotionAllowsJump(MotionCommand.Fallen));
-        Assert.Equal(0x48, MotionInterp.MotionAllowsJump(MotionCommand.Crouch));
-        Assert.Equal(0x48, MotionInterp.MotionAllowsJump(MotionCommand.Sleeping));
-        Assert.Equal(0, MotionInterp.MotionAllowsJump(0x41000015u));
-        Assert.Equal(0x48, MotionInterp.MotionAllowsJump(0x40000016u));
-        Assert.Equal(0x48, MotionInterp.MotionAllowsJump(0x4000001Eu));
-        Assert.Equal(0x48, MotionInterp.MotionAllowsJump(0x40000039u));
-        Assert.Equal(0, MotionInterp.MotionAllowsJump(0x4000003Au));
-        Assert.Equal(0x48, MotionInterp.MotionAllowsJump(0x1000006Fu));
-        Assert.Equal(0x48, MotionInterp.MotionAllowsJump(0x10000131u));
-        Assert.Equal(0, MotionInterp.MotionAllowsJump(0x10000079u));
+        Assert.Equal(MotionError.None, MotionInterp.MotionAllowsJump(MotionCommand.Ready));
+        Assert.Equal(MotionError.None, MotionInterp.MotionAllowsJump(MotionCommand.RunForward));
+        Assert.Equal(MotionError.None, MotionInterp.MotionAllowsJump(MotionCommand.Falling));
+        Assert.Equal(MotionError.YouCantJumpFromThisPosition, MotionInterp.MotionAllowsJump(MotionCommand.Fallen));
+        Assert.Equal(MotionError.YouCantJumpFromThisPosition, MotionInterp.MotionAllowsJump(MotionCommand.Crouch));
+        Assert.Equal(MotionError.YouCantJumpFromThisPosition, MotionInterp.MotionAllowsJump(MotionCommand.Sleeping));
+        Assert.Equal(MotionError.None, MotionInterp.MotionAllowsJump((MotionCommand)0x41000015u));
+        Assert.Equal(MotionError.YouCantJumpFromThisPosition, MotionInterp.MotionAllowsJump((MotionCommand)0x40000016u));
+        Assert.Equal(MotionError.YouCantJumpFromThisPosition, MotionInterp.MotionAllowsJump((MotionCommand)0x4000001Eu));
+        Assert.Equal(MotionError.YouCantJumpFromThisPosition, MotionInterp.MotionAllowsJump((MotionCommand)0x40000039u));
+        Assert.Equal(MotionError.None, MotionInterp.MotionAllowsJump((MotionCommand)0x4000003Au));
+        Assert.Equal(MotionError.YouCantJumpFromThisPosition, MotionInterp.MotionAllowsJump((MotionCommand)0x1000006Fu));
+        Assert.Equal(MotionError.YouCantJumpFromThisPosition, MotionInterp.MotionAllowsJump((MotionCommand)0x10000131u));
+        Assert.Equal(MotionError.None, MotionInterp.MotionAllowsJump((MotionCommand)0x10000079u));
     }
 
     [Fact]

@@ -13,7 +13,7 @@ public class MotionInterpVelocityTests
     public void Walk_StateVelocityIs312_AndTheTableWalks()
     {
         var (_, mm, mi, table) = MotionFixture.Create(new PlayerWeenie { RunSkill = 200 });
-        Assert.Equal(0, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params()));
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params()));
         // No hold key: WalkForward at speed 1; y = (float)(3.12f * 1.0) = 3.12f.
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(1f, mi.InterpretedState.ForwardSpeed);
@@ -28,7 +28,7 @@ public class MotionInterpVelocityTests
         // Run skill 0: GetRunRate = (0 + 4) / 4 = 1. WalkForward with the run key -> RunForward at 1 * 1 = 1; y = 4 * 1 = 4;
         // the clamp is 4 * rate = 4 (not exceeded).
         var (_, mm, mi, table) = MotionFixture.Create(new PlayerWeenie { RunSkill = 0 });
-        Assert.Equal(0, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params(1f, HoldKey.Run)));
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params(1f, HoldKey.Run)));
         Assert.Equal(MotionCommand.RunForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(1f, mi.InterpretedState.ForwardSpeed);
         Assert.Equal(new Vector3(0f, 4f, 0f), mi.GetStateVelocity());
@@ -145,7 +145,7 @@ public class MotionInterpVelocityTests
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
 
         // set_hold_run(1): the raw WalkForward is re-interpreted with the run key: RunForward at 2.375; y = 9.5.
-        mi.SetHoldRun(true, false);
+        mi.SetHoldRun(true, cancelMoveToOnChange: false);
         Assert.Equal(HoldKey.Run, mi.RawState.CurrentHoldKey);
         Assert.Equal(MotionCommand.RunForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(2.375f, mi.InterpretedState.ForwardSpeed);
@@ -153,10 +153,10 @@ public class MotionInterpVelocityTests
         Assert.Equal(2.375f, mi.MyRunRate);   // apply_interpreted_movement records a run's speed
 
         int pending = mi.PendingMotions.Count;
-        mi.SetHoldRun(true, false);           // no change: nothing re-applied
+        mi.SetHoldRun(true, cancelMoveToOnChange: false);           // no change: nothing re-applied
         Assert.Equal(pending, mi.PendingMotions.Count);
 
-        mi.SetHoldRun(false, false);
+        mi.SetHoldRun(false, cancelMoveToOnChange: false);
         Assert.Equal(HoldKey.None, mi.RawState.CurrentHoldKey);
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(1f, mi.InterpretedState.ForwardSpeed);
@@ -168,7 +168,7 @@ public class MotionInterpVelocityTests
     {
         var (_, mm, mi, table) = MotionFixture.Create(new PlayerWeenie { RunSkill = 200 });
         mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params());
-        Assert.Equal(0, mm.StopMotion(MotionCommand.WalkForward, MotionFixture.Params()));
+        Assert.Equal(MotionError.None, mm.StopMotion(MotionCommand.WalkForward, MotionFixture.Params()));
         Assert.Equal(MotionCommand.Ready, mi.InterpretedState.ForwardCommand);
         Assert.Equal(MotionCommand.Ready, mi.RawState.ForwardCommand);
         Assert.Equal(Vector3.Zero, table.Velocity);

@@ -21,10 +21,6 @@ internal static class MutatorCatalog
         // Tick(Double) and SetCurrentTime(Double), which are called).
         ["PhysicsWorld.UseTime()"] = "the world tick without an argument; run 30 times after every case",
         // Client-seam callbacks the engine calls; a client never calls them on the built-in implementations with values.
-        ["BasicMovementManager.UseTime()"] = "engine callback (no value input)",
-        ["BasicMovementManager.LeaveGround()"] = "engine callback (no value input)",
-        ["BasicMovementManager.HitGround()"] = "engine callback (no value input)",
-        ["BasicMovementManager.HandleEnterWorld()"] = "engine callback (no value input)",
         ["SimplePartArray.HandleMovement()"] = "engine callback (no value input)",
         ["SimplePartArray.HandleEnterWorld()"] = "engine callback (no value input)",
         // Part-array seam calls the object makes with its own validated state (IPartArray); a client calling them directly

@@ -43,7 +43,7 @@ internal static class Walkers
         }
 
         obj.PartArray = parts;
-        obj.MovementManager = new BasicMovementManager();
+        obj.Movement = new BasicMovementManager();
         if (state is not null)
         {
             obj.SetState(state.Value);

@@ -3,7 +3,8 @@ namespace AcDream.Core.Physics.Objects.Seams;
 /// <summary>
 /// A stand-in movement manager with no motion interpreter: it answers retail's no-weenie speeds and ignores the ground
 /// events. The world creates the retail <see cref="Motion.MovementManager"/> by default; a client or test that wants an
-/// object without motion installs this one through an <see cref="IMovementManagerFactory"/>.
+/// object without motion installs this one through an <see cref="IMovementManagerFactory"/> (or sets
+/// <see cref="PhysicsObj.Movement"/>). The engine callbacks are implemented explicitly.
 /// </summary>
 public sealed class BasicMovementManager : IMovementManager, IMotionInterpreter
 {
@@ -13,19 +14,19 @@ public sealed class BasicMovementManager : IMovementManager, IMotionInterpreter
     /// <inheritdoc />
     public IMotionInterpreter? MotionInterpreter => this;
 
-    /// <summary>Number of <see cref="UseTime"/> calls.</summary>
+    /// <summary>Number of per-step updates the engine gave it (<see cref="IMovementManager.UseTime"/> calls).</summary>
     public int UseTimeCount { get; private set; }
 
     /// <inheritdoc />
-    public void UseTime() => UseTimeCount++;
+    void IMovementManager.UseTime() => UseTimeCount++;
 
     /// <inheritdoc />
-    public void LeaveGround()
+    void IMovementManager.LeaveGround()
     {
     }
 
     /// <inheritdoc />
-    public void HitGround()
+    void IMovementManager.HitGround()
     {
     }
 
@@ -33,7 +34,7 @@ public sealed class BasicMovementManager : IMovementManager, IMotionInterpreter
     public bool IsMovingTo() => false;
 
     /// <inheritdoc />
-    public void HandleEnterWorld()
+    void IMovementManager.HandleEnterWorld()
     {
     }
 

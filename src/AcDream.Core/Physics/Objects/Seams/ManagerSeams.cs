@@ -1,7 +1,10 @@
 namespace AcDream.Core.Physics.Objects.Seams;
 
 /// <summary>
-/// Seam to an object's movement manager (retail <c>MovementManager</c>: motion interpreter and move-to manager).
+/// Seam to an object's movement manager (retail <c>MovementManager</c>: motion interpreter and move-to manager), held in
+/// <see cref="PhysicsObj.Movement"/>. The engine calls these members (the ground events, the per-step update, finished
+/// motions); a client implements them for its own movement manager, and does not call them. The retail
+/// <see cref="Motion.MovementManager"/> implements the engine callbacks explicitly, so they do not show on the class.
 /// Implementations are called inside the tick and must not allocate.
 /// </summary>
 public interface IMovementManager
@@ -21,17 +24,22 @@ public interface IMovementManager
     /// <summary>The object entered the world (retail <c>MovementManager::HandleEnterWorld</c>).</summary>
     void HandleEnterWorld();
 
-    /// <summary>The motion interpreter (retail <c>MovementManager::get_minterp</c>), or null.</summary>
+    /// <summary>The motion interpreter, or null while there is none. Must not create one.</summary>
     IMotionInterpreter? MotionInterpreter { get; }
 
-    /// <summary>Cancels a move-to with a weenie error code (retail <c>MovementManager::CancelMoveTo</c>; teleport uses 0x3C).</summary>
-    void CancelMoveTo(uint error)
+    /// <summary>The motion interpreter, created first when absent (retail <c>MovementManager::get_minterp</c>); by default
+    /// <see cref="MotionInterpreter"/>.</summary>
+    IMotionInterpreter? GetOrCreateMotionInterpreter() => MotionInterpreter;
+
+    /// <summary>Cancels a move-to with a weenie error (retail <c>MovementManager::CancelMoveTo</c>; a teleport gives
+    /// <see cref="Motion.MotionError.ITeleported"/>, an unstick <see cref="Motion.MotionError.ActionCancelled"/>).</summary>
+    void CancelMoveTo(Motion.MotionError error)
     {
     }
 
     /// <summary>The part array's motion table finished <paramref name="motion"/> (retail <c>MovementManager::MotionDone</c>,
     /// reached from <c>CPhysicsObj::MotionDone</c>).</summary>
-    void MotionDone(uint motion, bool success)
+    void MotionDone(Motion.MotionCommand motion, bool success)
     {
     }
 }

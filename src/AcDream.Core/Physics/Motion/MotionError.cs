@@ -1,0 +1,50 @@
+namespace AcDream.Core.Physics.Motion;
+
+/// <summary>
+/// The result of a motion call (retail's weenie error numbers, <c>WERROR</c>; <see cref="None"/> is success). Names are
+/// those of the server protocol's error list; a number without a name prints as itself.
+/// </summary>
+public enum MotionError : uint
+{
+    /// <summary>Success.</summary>
+    None = 0,
+
+    /// <summary>The object has no movement manager or its part array has no motion table (7).</summary>
+    NoMotionTable = 7,
+
+    /// <summary>The interpreter has no physics object (8).</summary>
+    NoPhysicsObject = 8,
+
+    /// <summary>The object is in the air and may not move or jump (0x24).</summary>
+    YouCantJumpWhileInTheAir = 0x24,
+
+    /// <summary>Crouching is refused outside the non-combat style (0x3F).</summary>
+    CantCrouchInCombat = 0x3F,
+
+    /// <summary>Sitting is refused outside the non-combat style (0x40).</summary>
+    CantSitInCombat = 0x40,
+
+    /// <summary>Lying down is refused outside the non-combat style (0x41).</summary>
+    CantLieDownInCombat = 0x41,
+
+    /// <summary>Chat emotes are refused outside the non-combat style (0x42).</summary>
+    CantChatEmoteInCombat = 0x42,
+
+    /// <summary>The action was cancelled: the error a move-to is cancelled with when the object unsticks (0x36).</summary>
+    ActionCancelled = 0x36,
+
+    /// <summary>The object teleported: the error a move-to is cancelled with on a teleport (0x3C).</summary>
+    ITeleported = 0x3C,
+
+    /// <summary>Six actions are already queued (0x45).</summary>
+    TooManyActions = 0x45,
+
+    /// <summary>General failure: no part array, fully constrained, or the jump stamina cost was refused (0x47).</summary>
+    GeneralMovementFailure = 0x47,
+
+    /// <summary>The current motion does not allow a jump (0x48).</summary>
+    YouCantJumpFromThisPosition = 0x48,
+
+    /// <summary>The character is too loaded down to jump (0x49).</summary>
+    CantJumpLoadedDown = 0x49,
+}
