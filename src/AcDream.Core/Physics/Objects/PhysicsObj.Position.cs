@@ -151,17 +151,21 @@ public sealed partial class PhysicsObj
     /// Enters the world at <paramref name="p"/>: stores the position, restarts the clock, places the object with SLIDE and,
     /// on success, activates it and tells the part array and movement manager.
     /// </summary>
-    /// <returns>False when the object has a parent or could not be placed. False, with nothing changed, when the position's
-    /// cell does not exist or is not loaded (an outdoor cell whose landblock the sweep's cells do not hold, an indoor cell not
-    /// loaded, an invalid cell id): the object stays where it was, out of the world if it was.</returns>
+    /// <returns>True when the object was placed in a cell and activated. False, with nothing changed, when the object has no
+    /// <see cref="PartArray"/> (retail's <c>enter_cell</c> puts no such object in a cell: it would be in none) or when the
+    /// position's cell does not exist or is not loaded (an outdoor cell whose landblock the sweep's cells do not hold, an indoor
+    /// cell not loaded, an invalid cell id): the object stays where it was, out of the world if it was. False when the object
+    /// has a parent (the position is stored, as retail, and the object stays attached) or the placement failed
+    /// (<see cref="SetPositionError"/> other than Ok).</returns>
     /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
     /// <exception cref="ArgumentException">The position is outside that domain; state unchanged.</exception>
     // retail: CPhysicsObj::enter_world(Position*) (acclient.c:323440) -> enter_world(slide) (acclient.c:323345)
     public bool EnterWorld(in Position p)
     {
         InputLimits.ThrowIfOutside(p, nameof(p));
+        // non-retail: without a part array retail "enters" no cell and answers true; a client is told instead
         // non-retail: retail stores the position and sends the object to the lost cell; a client is told instead
-        if (!World.Sweep.FindsCell(this, p))
+        if (_partArray is null || !World.Sweep.FindsCell(this, p))
         {
             return false;
         }
