@@ -34,7 +34,7 @@ public class InterpolationManagerQueueTests
         // 0.04 m < 0.05 m (acclient.c:389057): StopInterpolating and set_heading(p's heading).
         s.Managers.InterpolateTo(North(0.04f, heading: 90f), false);
         Assert.Equal(0, s.Interpolation!.Count);
-        Assert.Equal(90.0, s.Creature.Position.Frame.GetHeading(), 3);
+        Assert.Equal(90.0, s.Creature.Position.Frame.Heading, 3);
     }
 
     [Fact]
@@ -43,7 +43,7 @@ public class InterpolationManagerQueueTests
         var s = new ManagerScene(Start);
         s.Managers.InterpolateTo(North(0.04f, heading: 90f), true);
         Assert.Equal(0, s.Interpolation!.Count);
-        Assert.Equal(0.0, s.Creature.Position.Frame.GetHeading(), 3);
+        Assert.Equal(0.0, s.Creature.Position.Frame.Heading, 3);
     }
 
     [Fact]
@@ -114,8 +114,8 @@ public class InterpolationManagerQueueTests
         InterpolationManager im = s.Interpolation!;
         Assert.True(im.KeepHeading);
         // Both nodes carry the body's heading (0) instead of the reported 90.
-        Assert.Equal(0.0, im.GetNode(0).Position.Frame.GetHeading(), 3);
-        Assert.Equal(0.0, im.GetNode(1).Position.Frame.GetHeading(), 3);
+        Assert.Equal(0.0, im.GetNode(0).Position.Frame.Heading, 3);
+        Assert.Equal(0.0, im.GetNode(1).Position.Frame.Heading, 3);
     }
 
     [Fact]

@@ -53,7 +53,7 @@ public class StickyAndConstraintTests
         s.Managers.StickyManager!.AdjustOffset(ref offset, quantum);
         Assert.Equal(0f, offset.Origin.X, 5);
         Assert.Equal(expected, offset.Origin.Y, 4);
-        Assert.Equal(0.0, offset.GetHeading(), 3);
+        Assert.Equal(0.0, offset.Heading, 3);
     }
 
     [Fact]
@@ -68,7 +68,7 @@ public class StickyAndConstraintTests
         s.Creature.HandleUpdateTarget(new TargetInfo { ObjectId = 7, Status = TargetStatus.Ok, TargetPosition = target.Position });
         Frame offset = Frame.Identity;
         s.Managers.StickyManager!.AdjustOffset(ref offset, 0.1);
-        Assert.Equal(270.0, offset.GetHeading(), 2);
+        Assert.Equal(270.0, offset.Heading, 2);
     }
 
     [Fact]
@@ -95,7 +95,7 @@ public class StickyAndConstraintTests
         Frame offset = Frame.Identity;
         s.Managers.StickyManager!.AdjustOffset(ref offset, 0.1);
         Assert.Equal(2.0f, offset.Origin.X, 4);
-        Assert.Equal(90.0, offset.GetHeading(), 2);
+        Assert.Equal(90.0, offset.Heading, 2);
     }
 
     [Fact]

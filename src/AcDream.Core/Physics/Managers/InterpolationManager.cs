@@ -251,7 +251,7 @@ public sealed partial class InterpolationManager
                 // Already there: face the reported heading (unless kept) and stop.
                 if (!keepHeading)
                 {
-                    float degrees = (float)p.Frame.GetHeading();
+                    float degrees = (float)p.Frame.Heading;
                     PhysicsObj.SetHeading(degrees);
                 }
 
@@ -281,7 +281,7 @@ public sealed partial class InterpolationManager
         n.Extent = 0f;
         if (KeepHeading)
         {
-            float heading = (float)body.Frame.GetHeading();
+            float heading = (float)body.Frame.Heading;
             n.Position.Frame.SetHeading(heading);
         }
 

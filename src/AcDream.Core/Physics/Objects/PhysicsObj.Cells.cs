@@ -46,9 +46,11 @@ public sealed partial class PhysicsObj
     /// <exception cref="ArgumentException">The parent is this object or one of its descendants (a cycle), belongs to another
     /// world, or the frame is outside that domain (each cause named in the message; the frame's with parameter name
     /// <c>frame</c>); nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::set_parent (acclient.c:323002), simplified: no shadow cells
     public bool SetParent(PhysicsObj parent, uint partIndex, in Frame frame)
     {
+        ThrowIfRemoved();
         ArgumentNullException.ThrowIfNull(parent);
         // non-retail: the child frame's domain (InputLimits.MaxChildOffset, unit quaternion)
         if (parent == this)
@@ -112,9 +114,11 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Detaches this object from its parent; its clock restarts and its transient state is cleared.</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::unset_parent (acclient.c:320479), simplified
     public void UnsetParent()
     {
+        ThrowIfRemoved();
         Touch();
         PhysicsObj? parent = Parent;
         if (parent is null)

@@ -9,9 +9,11 @@ public sealed partial class PhysicsObj
 {
     /// <summary>Creates the position manager if absent and activates a non-static object (retail <c>MakePositionManager</c>).</summary>
     /// <returns>The position manager.</returns>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::MakePositionManager (acclient.c:317430)
     public PositionManager MakePositionManager()
     {
+        ThrowIfRemoved();
         Touch();
         PositionManager ??= new PositionManager(this);
         ActivateIfNotStatic();
@@ -45,9 +47,11 @@ public sealed partial class PhysicsObj
     /// <param name="keepHeading">True to keep the object's heading.</param>
     /// <exception cref="System.ArgumentException">The position is outside that domain; checked before the position manager
     /// is created (state unchanged).</exception>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::InterpolateTo (acclient.c:317580)
     public void InterpolateTo(in Position p, bool keepHeading)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
 
@@ -55,9 +59,11 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Stops interpolating.</summary>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::StopInterpolating (acclient.c:315836)
     public void StopInterpolating()
     {
+        ThrowIfRemoved();
         Touch();
         PositionManager?.StopInterpolating();
     }
@@ -72,9 +78,11 @@ public sealed partial class PhysicsObj
     /// <param name="maxDistance">Distance at which it holds fully, metres: finite.</param>
     /// <exception cref="System.ArgumentException">The position is outside that domain or a distance is not finite; checked
     /// before the position manager is created (state unchanged).</exception>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::ConstrainTo (acclient.c:317590)
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         if (!float.IsFinite(startDistance) || !float.IsFinite(maxDistance))
         {
@@ -95,9 +103,11 @@ public sealed partial class PhysicsObj
     public uint GetStickyObjectId() => PositionManager?.GetStickyObjectId() ?? 0u;
 
     /// <summary>Stops sticking to an object.</summary>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::unstick_from_object (acclient.c:315797)
     public void UnstickFromObject()
     {
+        ThrowIfRemoved();
         Touch();
         PositionManager?.UnStick();
     }
@@ -126,21 +136,26 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::GetMaxConstraintDistance (acclient.c:315908)
     public double GetMaxConstraintDistance() => (_position.ObjCellId & 0xFFFFu) >= 0x100u ? 20.0 : 50.0;
 
-    /// <summary>Bounding radius, metres (0 without a part array).</summary>
+    /// <summary>Bounding radius, metres: the part array's (<see cref="Parts.IPartArray.Radius"/>), 0 without one. Retail
+    /// <c>CPhysicsObj::GetRadius</c>, which hands back the part array's float (in x87's st0; every caller stores it as a
+    /// float).</summary>
     // retail: CPhysicsObj::GetRadius (acclient.c:315672)
-    public double GetRadius() => PartArray is not null ? PartArray.Radius : 0.0;
+    public float Radius => PartArray is not null ? PartArray.Radius : 0f;
 
-    /// <summary>Height, metres (0 without a part array).</summary>
+    /// <summary>Height, metres: the part array's (<see cref="Parts.IPartArray.Height"/>), 0 without one. Retail
+    /// <c>CPhysicsObj::GetHeight</c> (the part array's float).</summary>
     // retail: CPhysicsObj::GetHeight (acclient.c:315686)
-    public double GetHeight() => PartArray is not null ? PartArray.Height : 0.0;
+    public float Height => PartArray is not null ? PartArray.Height : 0f;
 
-    /// <summary>Step-up height, metres (0 without a part array).</summary>
+    /// <summary>Step-up height, metres: the part array's (<see cref="Parts.IPartArray.StepUpHeight"/>), 0 without one. Retail
+    /// <c>CPhysicsObj::GetStepUpHeight</c> (the part array's float).</summary>
     // retail: CPhysicsObj::GetStepUpHeight (acclient.c:315700)
-    public double GetStepUpHeight() => PartArray is not null ? PartArray.StepUpHeight : 0.0;
+    public float StepUpHeight => PartArray is not null ? PartArray.StepUpHeight : 0f;
 
-    /// <summary>Step-down height, metres (0 without a part array).</summary>
+    /// <summary>Step-down height, metres: the part array's (<see cref="Parts.IPartArray.StepDownHeight"/>), 0 without one. Retail
+    /// <c>CPhysicsObj::GetStepDownHeight</c> (the part array's float).</summary>
     // retail: CPhysicsObj::GetStepDownHeight (acclient.c:315714)
-    public double GetStepDownHeight() => PartArray is not null ? PartArray.StepDownHeight : 0.0;
+    public float StepDownHeight => PartArray is not null ? PartArray.StepDownHeight : 0f;
 
     private void ActivateIfNotStatic()
     {

@@ -15,9 +15,11 @@ public sealed partial class PhysicsObj
     /// (<see cref="InputLimits.MaxCoordinate"/>; outdoor: x, y in [−192, 384], see <see cref="InputLimits.OutdoorMargin"/>).</param>
     /// <exception cref="ArgumentException">The frame is outside that domain (state unchanged; retail would store it, and would
     /// zero a NaN quaternion whose origin is valid: that repair is kept for the engine's own steps).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::set_frame (acclient.c:321327)
     public void SetFrame(in Frame frame)
     {
+        ThrowIfRemoved();
         // non-retail: the frame's domain is checked before anything changes (retail stores any frame)
         InputLimits.ThrowIfOutside(_position.ObjCellId, frame, nameof(frame));
         Touch();
@@ -48,9 +50,11 @@ public sealed partial class PhysicsObj
     /// <summary>Stores a frame with no validity repair (retail <c>set_initial_frame</c>).</summary>
     /// <param name="frame">The frame: the domain of <see cref="SetFrame"/> (unit quaternion, origin in the cell's domain).</param>
     /// <exception cref="ArgumentException">The frame is outside that domain (state unchanged; retail would store it).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::set_initial_frame (acclient.c:321355)
     public void SetInitialFrame(in Frame frame)
     {
+        ThrowIfRemoved();
         // non-retail: the frame's domain is checked before anything changes
         InputLimits.ThrowIfOutside(_position.ObjCellId, frame, nameof(frame));
         Touch();
@@ -64,12 +68,15 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Turns the object to face <paramref name="degrees"/> (clockwise from north), keeping its origin.</summary>
-    /// <param name="degrees">Compass heading, degrees: any finite value (wrapped).</param>
-    /// <exception cref="ArgumentException">The heading is NaN or infinite.</exception>
+    /// <param name="degrees">Compass heading, degrees (the type of <see cref="Position.Heading"/>): any value whose float
+    /// rounding is finite (wrapped; rounded to float first, as retail's <c>set_heading(float)</c>).</param>
+    /// <exception cref="ArgumentException">The heading is NaN or infinite (also when its float rounding is).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::set_heading (acclient.c:321376)
-    public void SetHeading(float degrees)
+    public void SetHeading(double degrees)
     {
-        if (!float.IsFinite(degrees))
+        ThrowIfRemoved();
+        if (!float.IsFinite((float)degrees))
         {
             throw new ArgumentException("Heading must be finite.", nameof(degrees));
         }
@@ -85,9 +92,11 @@ public sealed partial class PhysicsObj
     /// <param name="p">The position: a unit quaternion and an origin in the position domain of its cell id
     /// (<see cref="InputLimits"/>: every component within ±65,536 m; outdoor: x, y in [−192, 384]).</param>
     /// <exception cref="ArgumentException">The position is outside that domain (state unchanged).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::store_position (acclient.c:321388)
     public void StorePosition(in Position p)
     {
+        ThrowIfRemoved();
         // non-retail: the position's domain is checked before anything changes (retail stores any position)
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
@@ -120,9 +129,11 @@ public sealed partial class PhysicsObj
     /// <param name="sliding">True to let the placement slide.</param>
     /// <exception cref="ArgumentException">The position is outside that domain (NaN, non-unit quaternion, origin out of
     /// range); state unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::SetPositionSimple (acclient.c:323420)
     public SetPositionError SetPositionSimple(in Position p, bool sliding)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
         SetPositionFlags flags = SetPositionFlags.Teleport | SetPositionFlags.SendPositionEvent;
@@ -139,9 +150,11 @@ public sealed partial class PhysicsObj
     /// <param name="flags">The placement flags.</param>
     /// <exception cref="ArgumentException">The position is outside that domain (NaN, non-unit quaternion, origin out of
     /// range); state unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::SetPosition (acclient.c:323289)
     public SetPositionError SetPosition(in Position p, SetPositionFlags flags)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
         return World.Sweep.SetPosition(this, p, flags);
@@ -159,9 +172,11 @@ public sealed partial class PhysicsObj
     /// (<see cref="SetPositionError"/> other than Ok).</returns>
     /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
     /// <exception cref="ArgumentException">The position is outside that domain; state unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::enter_world(Position*) (acclient.c:323440) -> enter_world(slide) (acclient.c:323345)
     public bool EnterWorld(in Position p)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         // non-retail: without a part array retail "enters" no cell and answers true; a client is told instead
         // non-retail: retail stores the position and sends the object to the lost cell; a client is told instead
@@ -207,9 +222,11 @@ public sealed partial class PhysicsObj
     /// finite contact-plane and sliding normals, of unit length (|n|² within 5 × EPSILON of 1) when flagged valid, and a finite
     /// contact-plane distance.</param>
     /// <exception cref="ArgumentException">The result is outside that domain (state unchanged; retail stores it).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
     public void CommitTransition(in TransitionResult t)
     {
+        ThrowIfRemoved();
         // non-retail: a client sweep's result is checked before anything changes
         InputLimits.ThrowIfOutside(t.CurrentPosition, nameof(t));
         if (!InputLimits.IsNormalInDomain(t.ContactPlaneNormal, t.ContactPlaneValid)
@@ -277,7 +294,7 @@ public sealed partial class PhysicsObj
 
         if ((_transientState & TransientState.Contact) != 0)
         {
-            SetOnWalkable(!(ContactPlaneNormal.Z < PhysicsGlobals.FloorZ));
+            SetOnWalkableInternal(!(ContactPlaneNormal.Z < PhysicsGlobals.FloorZ));
         }
         else
         {
@@ -302,8 +319,9 @@ public sealed partial class PhysicsObj
         }
 
         World.Sweep.HandleAllCollisions(this, prevContact, prevOnWalkable);
-        // non-retail: a collision listener may have removed the object from its world: it casts no shadow any more
-        if (CellId != 0 && !RemovedFromWorld)
+        // non-retail: a collision listener may have removed the object from its world: it is then in no cell (RemoveObject)
+        // and casts no shadow any more
+        if (CellId != 0)
         {
             World.Sweep.UpdateCellShadows(this);
         }
@@ -315,9 +333,11 @@ public sealed partial class PhysicsObj
     /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
     /// <exception cref="ArgumentException">The position is outside that domain; checked before the object leaves its cell
     /// (state unchanged).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
     // retail: the lost-cell branch of CPhysicsObj::SetPositionInternal (acclient.c:322503, 323034)
     public void GoToLostCell(in Position p)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         GoToLostCellInternal(p);
     }

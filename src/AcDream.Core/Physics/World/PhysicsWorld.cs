@@ -216,9 +216,11 @@ public sealed partial class PhysicsWorld
     /// <remarks>Safe from any callback inside a tick (hooks, the step observer, collision and player listeners), the removed
     /// object's own included: its step ends at the callback, its shadows leave the cells and never return, its hooks are
     /// dropped (pooled fades go back to the pool once), and every other object is still visited exactly once this tick. The
-    /// removed object keeps its last <see cref="PhysicsObj.Position"/> and <see cref="PhysicsObj.CellId"/> for the caller to
-    /// read; it cannot be added back.</remarks>
-    /// <exception cref="ArgumentException">The object is not in this world.</exception>
+    /// removed object keeps its last <see cref="PhysicsObj.Position"/> for the caller to read, but is in no cell
+    /// (<see cref="PhysicsObj.CellId"/> 0) and has no transient state (no contact, walkable or active bit); its id is free for a
+    /// new object. It cannot be added back: every public mutator of a removed object (placement, velocity, parent, state,
+    /// hooks, managers...) throws <see cref="InvalidOperationException"/>; its reads stay allowed.</remarks>
+    /// <exception cref="ArgumentException">The object is not in this world (or was already removed).</exception>
     public void RemoveObject(PhysicsObj obj)
     {
         ArgumentNullException.ThrowIfNull(obj);
@@ -242,6 +244,7 @@ public sealed partial class PhysicsWorld
         }
 
         obj.RemoveShadowsFromCells();
+        obj.ClearOnRemove();
         obj.ClearHooksOnRemove();
         if (_player == obj)
         {
