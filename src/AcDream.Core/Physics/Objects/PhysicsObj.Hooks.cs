@@ -89,25 +89,44 @@ public sealed partial class PhysicsObj
         int n = _animHookCount;
         if (n > 0)
         {
-            // non-retail: retail re-reads the growing count, so an anim hook queued by an anim hook ran in the same pass (and a
-            // hook that re-queues itself never returned); the hooks queued during the pass wait for the next step
-            for (int i = 0; i < n; i++)
+            int ran = 0;
+            try
             {
-                _animHooks[i]!.Execute(this);
-                // non-retail: Execute removed the object from its world, which dropped the queue
-                if (RemovedFromWorld)
+                // non-retail: retail re-reads the growing count, so an anim hook queued by an anim hook ran in the same pass
+                // (and a hook that re-queues itself never returned); the hooks queued during the pass wait for the next step
+                while (ran < n)
                 {
-                    return;
+                    IAnimHook hook = _animHooks[ran]!;
+                    // Counted before Execute: a one-shot hook that throws has run and is dropped with the others (the finally),
+                    // so the exception reaches the client once and the next step does not run the hook again.
+                    ran++;
+                    hook.Execute(this);
+                    // non-retail: Execute removed the object from its world, which dropped the queue
+                    if (RemovedFromWorld)
+                    {
+                        return;
+                    }
                 }
             }
-
-            // Retail shrinks the array to its count, then empties it; we keep the capacity so the tick does not allocate, and
-            // move the hooks queued during the pass to the front.
-            int queued = _animHookCount - n;
-            Array.Copy(_animHooks, n, _animHooks, 0, queued);
-            Array.Clear(_animHooks, queued, n);
-            _animHookCount = queued;
+            finally
+            {
+                // non-retail: the hooks that ran leave the queue also when one threw (try/finally costs nothing when none does)
+                if (!RemovedFromWorld)
+                {
+                    DropRunAnimHooks(ran);
+                }
+            }
         }
+    }
+
+    // Retail shrinks the array to its count, then empties it; we keep the capacity so the tick does not allocate, and move the
+    // hooks queued during the pass to the front.
+    private void DropRunAnimHooks(int ran)
+    {
+        int queued = _animHookCount - ran;
+        Array.Copy(_animHooks, ran, _animHooks, 0, queued);
+        Array.Clear(_animHooks, queued, ran);
+        _animHookCount = queued;
     }
 
     /// <summary>Applies one interpolated hook value to the object or its parts.</summary>

@@ -286,6 +286,10 @@ public sealed partial class PhysicsWorld
     /// <exception cref="ArgumentException"><paramref name="now"/> is NaN, infinite or not within ±2^40 s (state unchanged).</exception>
     /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick (re-entrant tick); nothing
     /// changes and the tick in progress goes on.</exception>
+    /// <remarks>An exception thrown by a client callback (collision or player listener, step observer, hooks, seams) propagates
+    /// out of the tick uncaught. The world stays usable: the next tick runs, the pools are full again, and the objects the
+    /// throwing tick did not reach are updated by the next one over the whole elapsed time (docs/stability.md, "After a
+    /// callback threw").</remarks>
     public bool Tick(double now)
     {
         SetCurrentTime(now);
@@ -296,8 +300,10 @@ public sealed partial class PhysicsWorld
     /// The world tick: when the client clock went backwards, resynchronises; when at least MinQuantum has passed since the
     /// last update, runs <see cref="PhysicsObj.UpdateObject"/> on every object in order and records the time.
     /// </summary>
-    /// <returns>True when the objects were updated.</returns>
+    /// <returns>True when the objects were visited (at least MinQuantum had passed; a frame longer than
+    /// <see cref="PhysicsProfile.HugeQuantum"/> is visited but discarded, see <see cref="DiscardedFrames"/>).</returns>
     /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick; nothing changes.</exception>
+    /// <remarks>A client callback's exception propagates; the world stays usable (see <see cref="Tick"/>).</remarks>
     // retail: CPhysics::UseTime (acclient.c:311334)
     public bool UseTime()
     {
