@@ -176,7 +176,7 @@ public class InterpolationManagerQueueTests
         var s = new ManagerScene(Start);
         s.Managers.InterpolateTo(North(150f), false);
         InterpolationManager im = s.Interpolation!;
-        im.Clear();
+        im.StopInterpolating();
         Assert.Equal(0, im.Count);
         Assert.False(im.IsActive);
         Assert.Equal(0, im.NodeFailCounter);

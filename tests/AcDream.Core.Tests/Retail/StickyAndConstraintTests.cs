@@ -223,7 +223,7 @@ public class StickyAndConstraintTests
     {
         var s = new ManagerScene(Start);
         s.Managers.ConstrainTo(ManagerScene.At(Start + new Vector3(0f, 30f, 0f)), 10f, 50f);
-        s.Managers.UnConstrain();
+        s.Managers.StopConstraining();
         Frame offset = Frame.FromHeading(new Vector3(0f, 1f, 0f), 0f);
         s.Managers.ConstraintManager!.AdjustOffset(ref offset, 0.1);
         Assert.Equal(1f, offset.Origin.Y);

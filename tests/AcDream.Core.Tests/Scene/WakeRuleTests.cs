@@ -128,7 +128,7 @@ public class WakeRuleTests
         ["StorePosition(Position)"] = (null, f => f.Obj.StorePosition(Near(0.5f))),
         ["TeleportHook()"] = (null, f => f.Obj.TeleportHook()),
         ["UnsetParent()"] = (f => f.Obj.SetParent(f.Other, 0u, Frame.Identity), f => f.Obj.UnsetParent()),
-        ["UnstickFromObject()"] = (null, f => f.Obj.UnstickFromObject()),
+        ["StopSticking()"] = (null, f => f.Obj.StopSticking()),
         ["UpdateObject()"] = (null, f => f.Obj.UpdateObject()),
         ["set_DetectionManager(IDetectionManager)"] = (null, f => f.Obj.DetectionManager = new NopSeams()),
         ["set_MovementManager(IMovementManager)"] = (null, f => f.Obj.MovementManager = new BasicMovementManager()),

@@ -212,9 +212,6 @@ public sealed partial class InterpolationManager
         OriginalDistance = BigDistance;
     }
 
-    /// <summary>Same as <see cref="StopInterpolating"/>.</summary>
-    public void Clear() => StopInterpolating();
-
     private void InterpolateToInternal(in Position p, bool keepHeading, in Position body)
     {
         // The newest queued Position is the reference; a Jump/Velocity tail or an empty queue measures from the body.

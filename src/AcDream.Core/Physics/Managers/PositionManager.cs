@@ -97,9 +97,9 @@ public sealed class PositionManager
         StickyManager.StickTo(objectId, radius, height);
     }
 
-    /// <summary>Releases a sticky target.</summary>
+    /// <summary>Stops sticking: releases the sticky target, if any (retail <c>PositionManager::UnStick</c>).</summary>
     // retail: PositionManager::UnStick (acclient.c:388306)
-    public void UnStick() => StickyManager?.HandleExitWorld();
+    public void StopSticking() => StickyManager?.StopSticking();
 
     /// <summary>Id of the sticky target, or 0.</summary>
     // retail: PositionManager::GetStickyObjectID (acclient.c:388352)
@@ -131,9 +131,9 @@ public sealed class PositionManager
         ConstraintManager.ConstrainTo(p, startDistance, maxDistance);
     }
 
-    /// <summary>Removes the constraint.</summary>
+    /// <summary>Stops constraining: lifts the constraint, if any (retail <c>PositionManager::UnConstrain</c>).</summary>
     // retail: PositionManager::UnConstrain (acclient.c:388380)
-    public void UnConstrain() => ConstraintManager?.UnConstrain();
+    public void StopConstraining() => ConstraintManager?.StopConstraining();
 
     /// <summary>True while adjust_offset and UseTime would do nothing: no interpolation node and no pending blip, no sticky
     /// target, no constraint (the scene may then skip a resting object).</summary>

@@ -206,9 +206,10 @@ public sealed class StickyManager
         }
     }
 
-    /// <summary>Drops the stick (target tracking cleared, move-to cancelled).</summary>
+    /// <summary>Stops sticking: drops the stick (target tracking cleared, move-to cancelled). Retail
+    /// <c>StickyManager::HandleExitWorld</c>, which <c>PositionManager::UnStick</c> calls.</summary>
     // retail: StickyManager::HandleExitWorld (acclient.c:388501)
-    public void HandleExitWorld()
+    public void StopSticking()
     {
         if (TargetId != 0)
         {

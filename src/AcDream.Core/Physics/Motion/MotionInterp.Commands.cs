@@ -521,7 +521,7 @@ public sealed partial class MotionInterp
 
         if ((PendingMotions.Head.Motion & MotionCommand.ActionMask) != 0)
         {
-            obj.UnstickFromObject();
+            obj.StopSticking();
             InterpretedState.RemoveAction();
             RawState.RemoveAction();
         }

@@ -102,14 +102,14 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::get_sticky_object_id (acclient.c:315807)
     public uint GetStickyObjectId() => PositionManager?.GetStickyObjectId() ?? 0u;
 
-    /// <summary>Stops sticking to an object.</summary>
+    /// <summary>Stops sticking to an object (retail <c>CPhysicsObj::unstick_from_object</c>).</summary>
     /// <exception cref="System.InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
     // retail: CPhysicsObj::unstick_from_object (acclient.c:315797)
-    public void UnstickFromObject()
+    public void StopSticking()
     {
         ThrowIfRemoved();
         Touch();
-        PositionManager?.UnStick();
+        PositionManager?.StopSticking();
     }
 
     /// <summary>True when the object is the world's player.</summary>

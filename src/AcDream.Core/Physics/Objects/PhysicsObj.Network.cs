@@ -105,9 +105,9 @@ public sealed partial class PhysicsObj
         ThrowIfRemoved();
         Touch();
         MovementManager?.CancelMoveTo(0x3Cu);
-        PositionManager?.UnStick();
+        PositionManager?.StopSticking();
         PositionManager?.StopInterpolating();
-        PositionManager?.UnConstrain();
+        PositionManager?.StopConstraining();
         TargetManager?.ClearTarget();
         World.Sweep.ReportCollisionEnd(this, true);
     }
