@@ -125,9 +125,9 @@ public class FidelitySwitchTests
         PhysicsObj snap = Creature(PhysicsProfile.Retail.With(remoteSmoothing: RemoteSmoothing.Snap), start);
         Assert.True(retail.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true) >= ReceivedPositionResult.Interpolating);
         Assert.True(snap.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true) >= ReceivedPositionResult.Interpolating);
-        Assert.True(retail.IsInterpolating());
+        Assert.True(retail.IsInterpolating);
         Assert.Equal(start, retail.Position.Frame.Origin);
-        Assert.False(snap.IsInterpolating());
+        Assert.False(snap.IsInterpolating);
         Assert.Equal(target, snap.Position.Frame.Origin);
     }
 

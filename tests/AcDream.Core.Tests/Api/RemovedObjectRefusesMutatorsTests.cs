@@ -30,8 +30,7 @@ public sealed class RemovedObjectRefusesMutatorsTests
     // Members of PhysicsObj that only read (allowed on a removed object).
     private static readonly HashSet<string> Reads = new(StringComparer.Ordinal)
     {
-        "GetUpdateTime", "IsMovingTo", "IsInterpolating", "IsFullyConstrained", "GetStickyObjectId",
-        "GetAutonomyBlipDistance", "GetStartConstraintDistance", "GetMaxConstraintDistance",
+        "GetUpdateTime", "IsMovingTo",
     };
 
     // The motion members belong to the motion module's part of the API (issue #23, another helper): not covered here.
@@ -127,8 +126,9 @@ public sealed class RemovedObjectRefusesMutatorsTests
         Assert.Contains("set_PartArray", called);
         Assert.Contains("AddAnimHook", called);
         Assert.True(called.Count >= 40, "only " + called.Count + " mutators found");
-        Assert.False(obj.IsInterpolating());
-        Assert.Equal(0u, obj.GetStickyObjectId());
+        Assert.False(obj.IsInterpolating);
+        Assert.Equal(0u, obj.StickyObjectId);
+        Assert.Equal(100.0, obj.AutonomyBlipDistance);
     }
 
     private static object? Argument(ParameterInfo p, PhysicsObj other)

@@ -156,13 +156,7 @@ public class WakeRuleTests
     [
         "CheckCollision(PhysicsObj)",
         "DetermineQuadrant(Position, Single, Position)",
-        "GetAutonomyBlipDistance()",
-        "GetMaxConstraintDistance()",
-        "GetStartConstraintDistance()",
-        "GetStickyObjectId()",
         "GetUpdateTime(PhysicsTimeStamp)",
-        "IsFullyConstrained()",
-        "IsInterpolating()",
         "IsMovingTo()",
     ];
 

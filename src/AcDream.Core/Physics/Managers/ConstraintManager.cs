@@ -122,5 +122,5 @@ public sealed class ConstraintManager
 
     /// <summary>True when the count exceeds 90 % of the max distance (checked even when not constrained, as retail).</summary>
     // retail: ConstraintManager::IsFullyConstrained (acclient.c:389416)
-    public bool IsFullyConstrained() => ConstraintDistanceMax * FullyConstrainedFraction < ConstraintPosOffset;
+    public bool IsFullyConstrained => ConstraintDistanceMax * FullyConstrainedFraction < ConstraintPosOffset;
 }

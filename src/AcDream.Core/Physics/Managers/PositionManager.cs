@@ -76,7 +76,7 @@ public sealed class PositionManager
 
     /// <summary>True while interpolation nodes are queued.</summary>
     // retail: PositionManager::IsInterpolating (acclient.c:388475)
-    public bool IsInterpolating() => InterpolationManager is not null && InterpolationManager.IsInterpolating();
+    public bool IsInterpolating => InterpolationManager is not null && InterpolationManager.IsInterpolating;
 
     /// <summary>Sticks the object to another object for one second (see <see cref="StickyManager.StickTo"/>).</summary>
     /// <param name="objectId">Target id.</param>
@@ -103,7 +103,7 @@ public sealed class PositionManager
 
     /// <summary>Id of the sticky target, or 0.</summary>
     // retail: PositionManager::GetStickyObjectID (acclient.c:388352)
-    public uint GetStickyObjectId() => StickyManager?.TargetId ?? 0u;
+    public uint StickyObjectId => StickyManager?.TargetId ?? 0u;
 
     /// <summary>Passes a target-tracking report to the sticky manager, if any.</summary>
     /// <param name="info">The report.</param>
@@ -152,5 +152,5 @@ public sealed class PositionManager
 
     /// <summary>True when the constraint holds the object fully.</summary>
     // retail: PositionManager::IsFullyConstrained (acclient.c:388390)
-    public bool IsFullyConstrained() => ConstraintManager is not null && ConstraintManager.IsFullyConstrained();
+    public bool IsFullyConstrained => ConstraintManager is not null && ConstraintManager.IsFullyConstrained;
 }

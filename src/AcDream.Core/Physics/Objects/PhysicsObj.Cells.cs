@@ -46,7 +46,7 @@ public sealed partial class PhysicsObj
     /// <exception cref="ArgumentException">The parent is this object or one of its descendants (a cycle), belongs to another
     /// world, or the frame is outside that domain (each cause named in the message; the frame's with parameter name
     /// <c>frame</c>); nothing changes.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_parent (acclient.c:323002), simplified: no shadow cells
     public bool SetParent(PhysicsObj parent, uint partIndex, in Frame frame)
     {
@@ -114,7 +114,7 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Detaches this object from its parent; its clock restarts and its transient state is cleared.</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::unset_parent (acclient.c:320479), simplified
     public void UnsetParent()
     {

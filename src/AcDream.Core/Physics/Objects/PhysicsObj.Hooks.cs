@@ -18,7 +18,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Pushes <paramref name="hook"/> at the head of the hook list: it runs first at the next step.</summary>
     /// <exception cref="ArgumentException">The hook already belongs to an object.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public void AddHook(PhysicsObjHook hook)
     {
         ThrowIfRemoved();
@@ -43,7 +43,7 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Queues a one-shot animation event for the next <c>process_hooks</c> (the bag grows by doubling, from 8).</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::add_anim_hook (acclient.c:322062)
     public void AddAnimHook(IAnimHook hook)
     {
@@ -179,7 +179,7 @@ public sealed partial class PhysicsObj
     /// <param name="delta">Fade duration, seconds: finite (below EPSILON: at once).</param>
     /// <exception cref="ArgumentException">The scale is outside [0.01, 100] (also NaN, ±∞, 0, negative) or the duration is
     /// not finite (state unchanged; retail accepts any).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetScale (acclient.c:320621)
     public void SetScale(float scale, double delta)
     {
@@ -201,7 +201,7 @@ public sealed partial class PhysicsObj
     /// <summary>Sets the scale at once (retail <c>SetScaleStatic</c>).</summary>
     /// <param name="scale">The scale: in [<see cref="InputLimits.MinScale"/>, <see cref="InputLimits.MaxScale"/>] = [0.01, 100].</param>
     /// <exception cref="ArgumentException">The scale is outside [0.01, 100] (also NaN, ±∞, 0, negative); state unchanged.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetScaleStatic (acclient.c:319007)
     public void SetScaleStatic(float scale)
     {
@@ -216,7 +216,7 @@ public sealed partial class PhysicsObj
     /// <summary>Fades the translucency from 0 to <paramref name="translucency"/> over <paramref name="delta"/> seconds (retail
     /// starts every such fade at 0), or sets it at once when delta &lt; EPSILON.</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetTranslucency (acclient.c:318693)
     public void SetTranslucency(float translucency, double delta)
     {
@@ -235,7 +235,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Fades the translucency from <paramref name="start"/> to <paramref name="end"/> over <paramref name="delta"/> seconds.</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetTranslucency2 (acclient.c:316920)
     public void SetTranslucency2(float start, float end, double delta)
     {
@@ -267,7 +267,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Fades one part's translucency (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPartTranslucency (acclient.c:318758)
     public void SetPartTranslucency(uint part, float start, float end, double delta)
     {
@@ -277,7 +277,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Fades the luminosity (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetLuminosity (acclient.c:318826)
     public void SetLuminosity(float start, float end, double delta)
     {
@@ -287,7 +287,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Fades one part's luminosity (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPartLuminosity (acclient.c:318792)
     public void SetPartLuminosity(uint part, float start, float end, double delta)
     {
@@ -297,7 +297,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Fades the diffusion (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetDiffusion (acclient.c:318894)
     public void SetDiffusion(float start, float end, double delta)
     {
@@ -307,7 +307,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Fades one part's diffusion (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPartDiffusion (acclient.c:318860)
     public void SetPartDiffusion(uint part, float start, float end, double delta)
     {
@@ -320,7 +320,7 @@ public sealed partial class PhysicsObj
     /// when delta &lt; EPSILON (only while the object is in a cell).
     /// </summary>
     /// <exception cref="ArgumentException"><paramref name="delta"/> is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::CallPES (acclient.c:318972)
     public void CallPes(uint scriptId, double delta)
     {

@@ -185,7 +185,7 @@ public sealed partial class PhysicsObj
     /// <remarks>An object without a part array is in no cell and never moves, whatever its velocity (retail); its
     /// <see cref="SetupIssues"/> reports <see cref="ObjectSetupIssues.NoPartArray"/>.</remarks>
     /// <exception cref="System.ArgumentException">A component is NaN or infinite (state unchanged).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_velocity (acclient.c:318577)
     public void SetVelocity(Vector3 velocity)
     {
@@ -227,7 +227,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Sets the velocity from local axes (rotated to world axes by the object's frame), then <see cref="SetVelocity"/>.</summary>
     /// <exception cref="System.ArgumentException">A component is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_local_velocity (acclient.c:318617)
     public void SetLocalVelocity(Vector3 localVelocity)
     {
@@ -239,7 +239,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Sets the angular velocity, rad/s in world axes (a plain store, as retail).</summary>
     /// <exception cref="System.ArgumentException">A component is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_omega (acclient.c:316612)
     public void SetOmega(Vector3 omega)
     {
@@ -253,7 +253,7 @@ public sealed partial class PhysicsObj
     /// Activates (restarting the clock of an inactive object; refused for a STATIC object) or deactivates the object.
     /// </summary>
     /// <returns>False only when activation was refused.</returns>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_active (acclient.c:316979)
     public bool SetActive(bool active)
     {
@@ -287,7 +287,7 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Sets or clears ON_WALKABLE, telling the movement manager on a change, then recomputes the acceleration.</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_on_walkable (acclient.c:318501)
     public void SetOnWalkable(bool onWalkable)
     {
@@ -326,7 +326,7 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Clears contact, walkable, sliding, water, the stationary bits and ACTIVE (retail <c>clear_transient_states</c>).</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::clear_transient_states (acclient.c:319024)
     public void ClearTransientStates()
     {
@@ -352,7 +352,7 @@ public sealed partial class PhysicsObj
     /// <see cref="CollisionSweep"/>) it stays ethereal and CHECK_ETHEREAL is set so the next step retries.
     /// </summary>
     /// <returns>True when the request took effect now.</returns>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_ethereal (acclient.c:319046)
     public bool SetEthereal(bool ethereal)
     {

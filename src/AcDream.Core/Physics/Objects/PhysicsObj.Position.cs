@@ -15,7 +15,7 @@ public sealed partial class PhysicsObj
     /// (<see cref="InputLimits.MaxCoordinate"/>; outdoor: x, y in [−192, 384], see <see cref="InputLimits.OutdoorMargin"/>).</param>
     /// <exception cref="ArgumentException">The frame is outside that domain (state unchanged; retail would store it, and would
     /// zero a NaN quaternion whose origin is valid: that repair is kept for the engine's own steps).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_frame (acclient.c:321327)
     public void SetFrame(in Frame frame)
     {
@@ -50,7 +50,7 @@ public sealed partial class PhysicsObj
     /// <summary>Stores a frame with no validity repair (retail <c>set_initial_frame</c>).</summary>
     /// <param name="frame">The frame: the domain of <see cref="SetFrame"/> (unit quaternion, origin in the cell's domain).</param>
     /// <exception cref="ArgumentException">The frame is outside that domain (state unchanged; retail would store it).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_initial_frame (acclient.c:321355)
     public void SetInitialFrame(in Frame frame)
     {
@@ -71,7 +71,7 @@ public sealed partial class PhysicsObj
     /// <param name="degrees">Compass heading, degrees (the type of <see cref="Position.Heading"/>): any value whose float
     /// rounding is finite (wrapped; rounded to float first, as retail's <c>set_heading(float)</c>).</param>
     /// <exception cref="ArgumentException">The heading is NaN or infinite (also when its float rounding is).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_heading (acclient.c:321376)
     public void SetHeading(double degrees)
     {
@@ -92,7 +92,7 @@ public sealed partial class PhysicsObj
     /// <param name="p">The position: a unit quaternion and an origin in the position domain of its cell id
     /// (<see cref="InputLimits"/>: every component within ±65,536 m; outdoor: x, y in [−192, 384]).</param>
     /// <exception cref="ArgumentException">The position is outside that domain (state unchanged).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::store_position (acclient.c:321388)
     public void StorePosition(in Position p)
     {
@@ -129,7 +129,7 @@ public sealed partial class PhysicsObj
     /// <param name="sliding">True to let the placement slide.</param>
     /// <exception cref="ArgumentException">The position is outside that domain (NaN, non-unit quaternion, origin out of
     /// range); state unchanged.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPositionSimple (acclient.c:323420)
     public SetPositionError SetPositionSimple(in Position p, bool sliding)
     {
@@ -150,7 +150,7 @@ public sealed partial class PhysicsObj
     /// <param name="flags">The placement flags.</param>
     /// <exception cref="ArgumentException">The position is outside that domain (NaN, non-unit quaternion, origin out of
     /// range); state unchanged.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPosition (acclient.c:323289)
     public SetPositionError SetPosition(in Position p, SetPositionFlags flags)
     {
@@ -172,7 +172,7 @@ public sealed partial class PhysicsObj
     /// (<see cref="SetPositionError"/> other than Ok).</returns>
     /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
     /// <exception cref="ArgumentException">The position is outside that domain; state unchanged.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::enter_world(Position*) (acclient.c:323440) -> enter_world(slide) (acclient.c:323345)
     public bool EnterWorld(in Position p)
     {
@@ -222,7 +222,7 @@ public sealed partial class PhysicsObj
     /// finite contact-plane and sliding normals, of unit length (|n|² within 5 × EPSILON of 1) when flagged valid, and a finite
     /// contact-plane distance.</param>
     /// <exception cref="ArgumentException">The result is outside that domain (state unchanged; retail stores it).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
     public void CommitTransition(in TransitionResult t)
     {
@@ -333,7 +333,7 @@ public sealed partial class PhysicsObj
     /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
     /// <exception cref="ArgumentException">The position is outside that domain; checked before the object leaves its cell
     /// (state unchanged).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="AcDream.Core.Physics.World.PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: the lost-cell branch of CPhysicsObj::SetPositionInternal (acclient.c:322503, 323034)
     public void GoToLostCell(in Position p)
     {

@@ -141,7 +141,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Friction coefficient in [0, 1] (retail <c>friction</c>, default 0.95): on walkable ground speed decays as (1 - f)^dt.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is NaN or outside [0, 1] (outside, retail's pow would yield NaN or growth).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public float Friction
     {
         get => _friction;
@@ -159,7 +159,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Elasticity (retail <c>elasticity</c>, default 0.05), used by the collision response.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public float Elasticity
     {
         get => _elasticity;
@@ -186,7 +186,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Floor of <see cref="Translucency"/> (retail <c>translucencyOriginal</c>).</summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is NaN or infinite.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public float TranslucencyOriginal
     {
         get => _translucencyOriginal;
@@ -236,7 +236,7 @@ public sealed partial class PhysicsObj
     /// part array (or null).</remarks>
     /// <exception cref="ArgumentException">The value is a <see cref="SimplePartArray"/> that belongs to another object; nothing
     /// changes.</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IPartArray? PartArray
     {
         get => _partArray;
@@ -289,7 +289,7 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Detection manager seam, or null.</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IDetectionManager? DetectionManager
     {
         get => _rare?.DetectionManager;
@@ -302,7 +302,7 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Target manager seam, or null.</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public ITargetManager? TargetManager
     {
         get => _rare?.TargetManager;
@@ -315,7 +315,7 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Particle manager seam, or null (runs for inactive objects too).</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IParticleManager? ParticleManager
     {
         get => _rare?.ParticleManager;
@@ -328,7 +328,7 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Script manager seam, or null (runs for inactive objects too).</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IScriptManager? ScriptManager
     {
         get => _rare?.ScriptManager;
@@ -342,7 +342,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>Sets the persistent state bits (retail <c>set_state</c>, acclient.c:322171, without the lighting and
     /// no-draw side effects, which belong to the renderer).</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public void SetState(PhysicsState newState)
     {
         ThrowIfRemoved();
@@ -355,7 +355,7 @@ public sealed partial class PhysicsObj
     /// (1,000 m/s²).</param>
     /// <exception cref="ArgumentException">A component is NaN or infinite, or the magnitude exceeds 1,000 m/s² (state
     /// unchanged).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world (<see cref="PhysicsWorld.RemoveObject"/>).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public void SetAcceleration(Vector3 acceleration)
     {
         ThrowIfRemoved();
