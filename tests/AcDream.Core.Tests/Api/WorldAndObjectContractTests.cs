@@ -200,6 +200,22 @@ public sealed class WorldAndObjectContractTests
     }
 
     [Fact]
+    public void SetParent_ARemovedParent_NamesTheCause()
+    {
+        var world = new PhysicsWorld();
+        PhysicsObj a = TickTestContext.CreateObject(world, new Vector3(10f, 10f, 0f), id: 1);
+        PhysicsObj b = TickTestContext.CreateObject(world, new Vector3(12f, 10f, 0f), id: 2);
+        world.RemoveObject(b);
+
+        var e = Assert.Throws<ArgumentException>(() => a.SetParent(b, 0, Frame.Identity));
+
+        Assert.Equal("parent", e.ParamName);
+        Assert.StartsWith("The parent was removed from its world.", e.Message, StringComparison.Ordinal);
+        Assert.Null(a.Parent);
+        Assert.NotEqual(0u, a.CellId);
+    }
+
+    [Fact]
     public void SetParent_ZeroQuaternionFrame_NamesTheCause()
     {
         var world = new PhysicsWorld();

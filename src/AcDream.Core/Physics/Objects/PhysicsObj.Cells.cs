@@ -44,7 +44,7 @@ public sealed partial class PhysicsObj
     /// ±<see cref="InputLimits.MaxChildOffset"/> (192 m).</param>
     /// <returns>True when attached; false when <paramref name="parent"/> already holds this object as a child.</returns>
     /// <exception cref="ArgumentException">The parent is this object or one of its descendants (a cycle), belongs to another
-    /// world, or the frame is outside that domain (each cause named in the message; the frame's with parameter name
+    /// world or was removed from it, or the frame is outside that domain (each cause named in the message; the frame's with parameter name
     /// <c>frame</c>); nothing changes.</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_parent (acclient.c:323002), simplified: no shadow cells
@@ -61,6 +61,11 @@ public sealed partial class PhysicsObj
         if (parent.World != World)
         {
             throw new ArgumentException("The parent belongs to another world.", nameof(parent));
+        }
+
+        if (parent.RemovedFromWorld)
+        {
+            throw new ArgumentException("The parent was removed from its world.", nameof(parent));
         }
 
         if (!InputLimits.IsChildFrameInDomain(frame))
