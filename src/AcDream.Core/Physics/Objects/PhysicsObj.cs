@@ -38,8 +38,11 @@ namespace AcDream.Core.Physics.Objects;
 /// retail).</item>
 /// </list>
 /// <para>Optional managers are null when absent and cost nothing. As in retail, an object enters a cell only when it has a
-/// part array (<c>CPhysicsObj::enter_cell</c>, acclient.c:318201), and update_object does nothing for an object with no cell:
-/// give every simulated object an <see cref="IPartArray"/> (e.g. <see cref="SimplePartArray"/>).</para>
+/// part array (<c>CPhysicsObj::enter_cell</c>, acclient.c:318201; <see cref="EnterWorld"/> returns false without one), and
+/// update_object does nothing for an object with no cell: give every simulated object an <see cref="IPartArray"/> (e.g.
+/// <see cref="SimplePartArray"/>).</para>
+/// <para>An object removed from its world (<see cref="PhysicsWorld.RemoveObject"/>) is in no cell, has no transient state
+/// and refuses every public mutator (<see cref="InvalidOperationException"/>); its reads stay allowed.</para>
 /// </remarks>
 public sealed partial class PhysicsObj
 {
