@@ -140,6 +140,29 @@ public sealed class WorldAndObjectContractTests
         Assert.False(child.EnterWorld(new Position(TickTestContext.OutdoorCell, new Vector3(5f, 5f, 0f))));
     }
 
+    [Fact]
+    public void BoolReturns_SayWhatTheDocsSay()
+    {
+        // SetParent: true when attached, false when the parent already holds the child (nothing changes).
+        var world = new PhysicsWorld();
+        PhysicsObj parent = TickTestContext.CreateObject(world, new Vector3(10f, 10f, 0f), id: 1);
+        PhysicsObj child = TickTestContext.CreateObject(world, new Vector3(12f, 10f, 0f), id: 2);
+        Assert.True(child.SetParent(parent, 0, Frame.Identity));
+        Assert.False(child.SetParent(parent, 0, Frame.Identity));
+        Assert.Equal(1, parent.Children!.Count);
+
+        // SetActive: false only when activation is refused (a STATIC object); deactivation answers true.
+        PhysicsObj still = TickTestContext.CreateObject(world, new Vector3(14f, 10f, 0f), id: 3);
+        Assert.True(still.SetActive(false));
+        still.SetState(still.State | PhysicsState.Static);
+        Assert.False(still.SetActive(true));
+        Assert.False(still.IsActive);
+
+        // Tick / UseTime: false below MinQuantum (nothing runs), true once objects were visited.
+        Assert.False(world.Tick(0.01));
+        Assert.True(world.Tick(0.05));
+    }
+
     // ---- 4. Two objects with one id ----
 
     [Fact]
