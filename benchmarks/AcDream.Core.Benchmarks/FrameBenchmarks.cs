@@ -110,12 +110,12 @@ public class FrameBenchmarks
 
     /// <summary>Frame::get_heading.</summary>
     [Benchmark(OperationsPerInvoke = Ops)]
-    public double GetHeading()
+    public double Heading()
     {
         double s = 0;
         for (int i = 0; i < Ops; i++)
         {
-            s += _a.GetHeading();
+            s += _a.Heading;
         }
 
         return s;

@@ -124,7 +124,7 @@ public static class Program
         string creature = remote.Obj is null ? "(none yet)" : string.Create(CultureInfo.InvariantCulture,
             $"{remote.ErrorAt(now),5:F2} m  {remote.Obj.Translucency,4:F2}");
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"{now,4:F0}  0x{player.Position.ObjCellId:X8} {o.X,7:F2} {o.Y,7:F2} {o.Z,7:F2}  {contact,-8} {speed,5:F2}  {player.Position.Frame.GetHeading(),6:F1}  {command,-31} | {creature}"));
+            $"{now,4:F0}  0x{player.Position.ObjCellId:X8} {o.X,7:F2} {o.Y,7:F2} {o.Z,7:F2}  {contact,-8} {speed,5:F2}  {player.Position.Frame.Heading,6:F1}  {command,-31} | {creature}"));
     }
 
     // The ac-terrain folder: ACDREAM_TERRAIN_DIR, else ../shared/data/ac-terrain beside a folder above the program or the

@@ -42,7 +42,7 @@ public class FidelitySwitchTests
         Assert.True(drift > 10 * NormalisedBound, $"never-renormalised drift {drift}");
         // Both still turn the same way: 120 s * 2 rad/s = 240 rad = 13751 deg = 38 turns + 71.0 deg counter-clockwise,
         // i.e. heading 360 - 71.0 = 289.0 (clockwise from north). Drift only scales the quaternion.
-        Assert.Equal(retail.Position.Frame.GetHeading(), never.Position.Frame.GetHeading(), 1);
+        Assert.Equal(retail.Position.Frame.Heading, never.Position.Frame.Heading, 1);
     }
 
     [Fact]
@@ -64,7 +64,7 @@ public class FidelitySwitchTests
         // +90 degrees about +Z (counter-clockwise seen from above) turns north-facing identity to face west: heading 270.
         Frame f = Frame.Identity;
         f.GRotateNoRenormalise(new Vector3(0f, 0f, (float)(Math.PI / 2)));
-        Assert.Equal(270.0, f.GetHeading(), 4);
+        Assert.Equal(270.0, f.Heading, 4);
         Assert.True(Math.Abs(f.QuaternionNorm2 - 1.0) < 1e-6);
         // Below EPSILON (|w|² < EPSILON²) nothing changes, as in grotate.
         Frame g = Frame.Identity;
@@ -125,9 +125,9 @@ public class FidelitySwitchTests
         PhysicsObj snap = Creature(PhysicsProfile.Retail.With(remoteSmoothing: RemoteSmoothing.Snap), start);
         Assert.True(retail.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true) >= ReceivedPositionResult.Interpolating);
         Assert.True(snap.HandleReceivedPosition(ManagerScene.At(target), 1, 0, true) >= ReceivedPositionResult.Interpolating);
-        Assert.True(retail.IsInterpolating());
+        Assert.True(retail.IsInterpolating);
         Assert.Equal(start, retail.Position.Frame.Origin);
-        Assert.False(snap.IsInterpolating());
+        Assert.False(snap.IsInterpolating);
         Assert.Equal(target, snap.Position.Frame.Origin);
     }
 

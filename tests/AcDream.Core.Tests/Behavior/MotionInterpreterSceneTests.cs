@@ -72,9 +72,9 @@ public class MotionInterpreterSceneTests
         MovementManager mm = MovementManager.Of(player);
         mm.DoMotion(MotionCommand.TurnRight, new MovementParameters());
         SweepScene.Run(world, 1);
-        double h0 = player.Position.Frame.GetHeading();
+        double h0 = player.Position.Frame.Heading;
         SweepScene.Run(world, 20);   // 1 s at π/2 rad/s clockwise: heading + 90°
-        double turned = player.Position.Frame.GetHeading() - h0;
+        double turned = player.Position.Frame.Heading - h0;
         Assert.Equal(90.0, (turned + 360.0) % 360.0, 2);
     }
 

@@ -33,7 +33,7 @@ public class FrameGoldenHashTests
             if ((i & 63) == 0)
             {
                 body.SetHeading((float)(rng.NextDouble() * 720.0 - 360.0));
-                h.Add(body.GetHeading());
+                h.Add(body.Heading);
                 h.Add(body.LocalToGlobal(new Vector3(1f, 2f, 3f)));
             }
 

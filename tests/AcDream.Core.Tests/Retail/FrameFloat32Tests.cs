@@ -18,7 +18,7 @@ public class FrameFloat32Tests
         r.CombineFloat32(f1, f2);
         Assert.Equal(11f, r.Origin.X, 5);
         Assert.Equal(20f, r.Origin.Y, 5);
-        Assert.Equal(90.0, r.GetHeading(), 4);
+        Assert.Equal(90.0, r.Heading, 4);
     }
 
     [Fact]

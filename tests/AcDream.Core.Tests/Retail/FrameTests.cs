@@ -44,7 +44,7 @@ public class FrameTests
         Assert.Equal(11f, r.Origin.X, 5);
         Assert.Equal(20f, r.Origin.Y, 5);
         Assert.Equal(0.5f, r.Origin.Z, 5);
-        Assert.Equal(90.0, r.GetHeading(), 4);
+        Assert.Equal(90.0, r.Heading, 4);
     }
 
     [Fact]
@@ -53,7 +53,7 @@ public class FrameTests
         // 90 + 90 degrees of heading = 180 (facing south).
         Frame a = Frame.FromHeading(Vector3.Zero, 90f);
         Frame r = Frame.Combined(a, a);
-        Assert.Equal(180.0, r.GetHeading(), 4);
+        Assert.Equal(180.0, r.Heading, 4);
     }
 
     [Theory]
@@ -69,7 +69,7 @@ public class FrameTests
         Assert.Equal(fx, fwd.X, 6);
         Assert.Equal(fy, fwd.Y, 6);
         Assert.Equal(0f, fwd.Z, 6);
-        double back = f.GetHeading();
+        double back = f.Heading;
         // 0 may come back as 0 or as 360 - tiny; compare on the circle: map the difference into (-180, 180].
         double diff = Math.Abs(((back - heading) % 360.0 + 540.0) % 360.0 - 180.0);
         Assert.True(diff < 1e-4, $"heading {heading} read back as {back}");
@@ -79,7 +79,7 @@ public class FrameTests
     public void GetHeading_IdentityFacesNorth_Zero()
     {
         // Retail ambiguity pinned: identity (w = 1) faces north, heading 0 (see HeadingMath.CompassFromAtan2).
-        Assert.Equal(0.0, Frame.Identity.GetHeading());
+        Assert.Equal(0.0, Frame.Identity.Heading);
     }
 
     [Theory]
@@ -90,7 +90,7 @@ public class FrameTests
     {
         Frame f = Frame.Identity;
         f.SetHeading(input);
-        double h = f.GetHeading();
+        double h = f.Heading;
         double d = Math.Abs(h - expected);
         Assert.True(d < 1e-4 || Math.Abs(d - 360.0) < 1e-4, $"{input} -> {h}");
     }
@@ -257,7 +257,7 @@ public class FrameTests
         // A clockwise quarter turn (seen from above) is -pi/2 about +Z: heading 0 -> 90.
         Frame f = Frame.Identity;
         f.GRotate(new Vector3(0f, 0f, -MathF.PI / 2f));
-        Assert.Equal(90.0, f.GetHeading(), 4);
+        Assert.Equal(90.0, f.Heading, 4);
     }
 
     [Fact]
@@ -318,7 +318,7 @@ public class FrameTests
         Frame to = Frame.FromHeading(Vector3.Zero, 90f);
         Frame r = Frame.Identity;
         r.InterpolateRotation(from, to, 0.5f);
-        Assert.Equal(45.0, r.GetHeading(), 3);
+        Assert.Equal(45.0, r.Heading, 3);
     }
 
     [Fact]
@@ -331,7 +331,7 @@ public class FrameTests
         neg.SetRotate(-to.Qw, -to.Qx, -to.Qy, -to.Qz);
         Frame r = Frame.Identity;
         r.InterpolateRotation(from, neg, 0.5f);
-        Assert.Equal(45.0, r.GetHeading(), 3);
+        Assert.Equal(45.0, r.Heading, 3);
     }
 
     [Fact]

@@ -23,7 +23,7 @@ public class InterpolationManagerQueueTests
         Assert.Equal(1, im.Count);
         Assert.Equal(InterpolationNodeType.Position, im.GetNode(0).Type);
         Assert.Equal(0, im.NodeFailCounter);
-        Assert.True(s.Creature.IsInterpolating());
+        Assert.True(s.Creature.IsInterpolating);
     }
 
     [Fact]
@@ -34,7 +34,7 @@ public class InterpolationManagerQueueTests
         // 0.04 m < 0.05 m (acclient.c:389057): StopInterpolating and set_heading(p's heading).
         s.Managers.InterpolateTo(North(0.04f, heading: 90f), false);
         Assert.Equal(0, s.Interpolation!.Count);
-        Assert.Equal(90.0, s.Creature.Position.Frame.GetHeading(), 3);
+        Assert.Equal(90.0, s.Creature.Position.Frame.Heading, 3);
     }
 
     [Fact]
@@ -43,7 +43,7 @@ public class InterpolationManagerQueueTests
         var s = new ManagerScene(Start);
         s.Managers.InterpolateTo(North(0.04f, heading: 90f), true);
         Assert.Equal(0, s.Interpolation!.Count);
-        Assert.Equal(0.0, s.Creature.Position.Frame.GetHeading(), 3);
+        Assert.Equal(0.0, s.Creature.Position.Frame.Heading, 3);
     }
 
     [Fact]
@@ -114,8 +114,8 @@ public class InterpolationManagerQueueTests
         InterpolationManager im = s.Interpolation!;
         Assert.True(im.KeepHeading);
         // Both nodes carry the body's heading (0) instead of the reported 90.
-        Assert.Equal(0.0, im.GetNode(0).Position.Frame.GetHeading(), 3);
-        Assert.Equal(0.0, im.GetNode(1).Position.Frame.GetHeading(), 3);
+        Assert.Equal(0.0, im.GetNode(0).Position.Frame.Heading, 3);
+        Assert.Equal(0.0, im.GetNode(1).Position.Frame.Heading, 3);
     }
 
     [Fact]
@@ -133,13 +133,13 @@ public class InterpolationManagerQueueTests
     public void AutonomyBlipDistance_IsTwentyIndoorsForOthersTwentyFiveForThePlayerAndHundredOutdoors()
     {
         var s = new ManagerScene(Start);
-        Assert.Equal(100.0, s.Creature.GetAutonomyBlipDistance());
-        Assert.Equal(100.0, s.Player.GetAutonomyBlipDistance());
+        Assert.Equal(100.0, s.Creature.AutonomyBlipDistance);
+        Assert.Equal(100.0, s.Player.AutonomyBlipDistance);
         var indoor = new Position(ManagerScene.Block | 0x0100u, Frame.FromHeading(Start, 0f));
         s.Creature.SetPositionSimple(indoor, true);
         s.Player.SetPositionSimple(indoor, true);
-        Assert.Equal(20.0, s.Creature.GetAutonomyBlipDistance());
-        Assert.Equal(25.0, s.Player.GetAutonomyBlipDistance());
+        Assert.Equal(20.0, s.Creature.AutonomyBlipDistance);
+        Assert.Equal(25.0, s.Player.AutonomyBlipDistance);
         // Indoors a report 21 m away is far for a creature: pre-armed blip.
         var far = new Position(ManagerScene.Block | 0x0100u, Frame.FromHeading(Start + new Vector3(0f, 21f, 0f), 0f));
         s.Creature.InterpolateTo(far, false);
@@ -176,9 +176,9 @@ public class InterpolationManagerQueueTests
         var s = new ManagerScene(Start);
         s.Managers.InterpolateTo(North(150f), false);
         InterpolationManager im = s.Interpolation!;
-        im.Clear();
+        im.StopInterpolating();
         Assert.Equal(0, im.Count);
-        Assert.False(im.IsActive);
+        Assert.False(im.IsInterpolating);
         Assert.Equal(0, im.NodeFailCounter);
         Assert.Equal(0u, im.FrameCounter);
         Assert.Equal(0f, im.ProgressQuantum);

@@ -93,14 +93,14 @@ public class InterpolationManagerStepTests
         Frame offset = Frame.FromHeading(new Vector3(0f, 5f, 0f), 30f);
         s.Interpolation!.AdjustOffset(ref offset, 0.1);
         Assert.Equal(0.8f, offset.Origin.Y, 4);
-        Assert.Equal(90.0, offset.GetHeading(), 3);
+        Assert.Equal(90.0, offset.Heading, 3);
 
         var k = new ManagerScene(Start);
         k.Managers.InterpolateTo(North(10f, heading: 90f), true);
         Frame kept = Frame.FromHeading(new Vector3(0f, 5f, 0f), 30f);
         k.Interpolation!.AdjustOffset(ref kept, 0.1);
         Assert.Equal(0.8f, kept.Origin.Y, 4);
-        Assert.Equal(0.0, kept.GetHeading(), 3);
+        Assert.Equal(0.0, kept.Heading, 3);
     }
 
     [Fact]

@@ -119,14 +119,14 @@ public class ObjectTickConstantsTests
         PhysicsObj outdoor = TickTestContext.CreateObject(world, new Vector3(10f, 10f, 0f));
         PhysicsObj indoor = world.CreateObject();
         indoor.StorePosition(new Position(0xA9B40105u, new Vector3(1f, 1f, 1f)));
-        Assert.Equal(100.0, outdoor.GetAutonomyBlipDistance());
-        Assert.Equal(20.0, indoor.GetAutonomyBlipDistance());
+        Assert.Equal(100.0, outdoor.AutonomyBlipDistance);
+        Assert.Equal(20.0, indoor.AutonomyBlipDistance);
         world.Player = indoor;
-        Assert.Equal(25.0, indoor.GetAutonomyBlipDistance());
-        Assert.Equal(10.0, outdoor.GetStartConstraintDistance());
-        Assert.Equal(5.0, indoor.GetStartConstraintDistance());
-        Assert.Equal(50.0, outdoor.GetMaxConstraintDistance());
-        Assert.Equal(20.0, indoor.GetMaxConstraintDistance());
+        Assert.Equal(25.0, indoor.AutonomyBlipDistance);
+        Assert.Equal(10.0, outdoor.StartConstraintDistance);
+        Assert.Equal(5.0, indoor.StartConstraintDistance);
+        Assert.Equal(50.0, outdoor.MaxConstraintDistance);
+        Assert.Equal(20.0, indoor.MaxConstraintDistance);
     }
 
     [Fact]

@@ -46,10 +46,10 @@ public class PositionTests
     public void Heading_ToTargetDueEast_Is90_DueNorth_Is0()
     {
         var a = new Position(0xA9B40001u, new Vector3(10f, 10f, 0f));
-        Assert.Equal(90.0, a.Heading(new Position(0xA9B40001u, new Vector3(20f, 10f, 0f))), 9);
-        Assert.Equal(0.0, a.Heading(new Position(0xA9B40001u, new Vector3(10f, 20f, 0f))), 9);
-        Assert.Equal(180.0, a.Heading(new Position(0xA9B40001u, new Vector3(10f, 0f, 0f))), 9);
-        Assert.Equal(0.0, a.Heading(a));
+        Assert.Equal(90.0, a.HeadingTo(new Position(0xA9B40001u, new Vector3(20f, 10f, 0f))), 9);
+        Assert.Equal(0.0, a.HeadingTo(new Position(0xA9B40001u, new Vector3(10f, 20f, 0f))), 9);
+        Assert.Equal(180.0, a.HeadingTo(new Position(0xA9B40001u, new Vector3(10f, 0f, 0f))), 9);
+        Assert.Equal(0.0, a.HeadingTo(a));
     }
 
     [Fact]
@@ -93,7 +93,7 @@ public class PositionTests
         // Other is 4 m east = straight ahead of an east-facing body, same heading.
         Assert.Equal(0f, rel.Origin.X, 5);
         Assert.Equal(4f, rel.Origin.Y, 5);
-        Assert.Equal(0.0, Math.Min(rel.GetHeading(), 360.0 - rel.GetHeading()), 3);
+        Assert.Equal(0.0, Math.Min(rel.Heading, 360.0 - rel.Heading), 3);
     }
 
     [Fact]

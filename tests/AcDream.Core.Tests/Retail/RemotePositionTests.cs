@@ -57,7 +57,7 @@ public class RemotePositionTests
     {
         ManagerScene s = Measured();
         Assert.Equal(ReceivedPositionResult.NoContact, s.Creature.HandleReceivedPosition(North(2f, 3f), 1, 0, false));
-        Assert.False(s.Creature.IsInterpolating());
+        Assert.False(s.Creature.IsInterpolating);
         Assert.Null(s.Creature.PositionManager?.ConstraintManager);
         Assert.Equal((ushort)1, s.Creature.GetUpdateTime(PhysicsTimeStamp.Position));
     }
@@ -70,7 +70,7 @@ public class RemotePositionTests
         Assert.True(s.Creature.PlayerDistance >= 96f);
         Position p = ManagerScene.At(new Vector3(96f, 198f, 0f));
         Assert.Equal(ReceivedPositionResult.Placed, s.Creature.HandleReceivedPosition(p, 1, 0, true));
-        Assert.False(s.Creature.IsInterpolating());
+        Assert.False(s.Creature.IsInterpolating);
         Assert.Equal(p.Frame.Origin, s.Creature.Position.Frame.Origin);
     }
 
@@ -81,7 +81,7 @@ public class RemotePositionTests
         s.Creature.HandleReceivedPosition(North(2f), 1, 0, true);
         Position p = ManagerScene.At(Start + new Vector3(30f, 0f, 0f));
         Assert.Equal(ReceivedPositionResult.Placed, s.Creature.HandleReceivedPosition(p, 2, 1, false));
-        Assert.False(s.Creature.IsInterpolating());
+        Assert.False(s.Creature.IsInterpolating);
         Assert.Equal(p.Frame.Origin, s.Creature.Position.Frame.Origin);
         Assert.Equal(0x1012u, (uint)s.Ground.LastPlacementFlags);
         Assert.Equal(ReceivedPositionResult.StaleTeleport, s.Creature.HandleReceivedPosition(North(5f), 3, 0, true));
@@ -95,7 +95,7 @@ public class RemotePositionTests
         Position bad = North(1f);
         bad.Frame.Origin = new Vector3(0f, float.NaN, 0f);
         Assert.Throws<ArgumentException>(() => s.Creature.HandleReceivedPosition(bad, 1, 0, true));
-        Assert.False(s.Creature.IsInterpolating());
+        Assert.False(s.Creature.IsInterpolating);
         Assert.Equal((ushort)0, s.Creature.GetUpdateTime(PhysicsTimeStamp.Position));
     }
 }

@@ -30,6 +30,6 @@ public class SleddingHeadingTests
         obj.SetVelocity(new Vector3(vx, vy, 0f));
         world.SetCurrentTime(100.0 + 1.0 / 30.0);
         obj.UpdateObject();
-        Assert.Equal(expectedHeading, obj.Position.Frame.GetHeading(), 3);
+        Assert.Equal(expectedHeading, obj.Position.Frame.Heading, 3);
     }
 }

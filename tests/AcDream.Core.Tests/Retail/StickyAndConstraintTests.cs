@@ -53,7 +53,7 @@ public class StickyAndConstraintTests
         s.Managers.StickyManager!.AdjustOffset(ref offset, quantum);
         Assert.Equal(0f, offset.Origin.X, 5);
         Assert.Equal(expected, offset.Origin.Y, 4);
-        Assert.Equal(0.0, offset.GetHeading(), 3);
+        Assert.Equal(0.0, offset.Heading, 3);
     }
 
     [Fact]
@@ -68,7 +68,7 @@ public class StickyAndConstraintTests
         s.Creature.HandleUpdateTarget(new TargetInfo { ObjectId = 7, Status = TargetStatus.Ok, TargetPosition = target.Position });
         Frame offset = Frame.Identity;
         s.Managers.StickyManager!.AdjustOffset(ref offset, 0.1);
-        Assert.Equal(270.0, offset.GetHeading(), 2);
+        Assert.Equal(270.0, offset.Heading, 2);
     }
 
     [Fact]
@@ -95,7 +95,7 @@ public class StickyAndConstraintTests
         Frame offset = Frame.Identity;
         s.Managers.StickyManager!.AdjustOffset(ref offset, 0.1);
         Assert.Equal(2.0f, offset.Origin.X, 4);
-        Assert.Equal(90.0, offset.GetHeading(), 2);
+        Assert.Equal(90.0, offset.Heading, 2);
     }
 
     [Fact]
@@ -112,10 +112,10 @@ public class StickyAndConstraintTests
         Assert.Equal(0.5, tracker.LastQuantum);
         s.World.SetCurrentTime(1.0);   // timeout = 0 + 1.0; the test is strict `>` (acclient.c:388613)
         s.Managers.UseTime();
-        Assert.Equal(42u, s.Creature.GetStickyObjectId());
+        Assert.Equal(42u, s.Creature.StickyObjectId);
         s.World.SetCurrentTime(1.001);
         s.Managers.UseTime();
-        Assert.Equal(0u, s.Creature.GetStickyObjectId());
+        Assert.Equal(0u, s.Creature.StickyObjectId);
         Assert.Equal(1, tracker.Clears);
         Assert.Equal(AcDream.Core.Physics.Motion.MotionError.ActionCancelled, motion.LastCancel);   // 0x36
     }
@@ -126,11 +126,11 @@ public class StickyAndConstraintTests
         var s = new ManagerScene(Start);
         s.Managers.StickTo(42, 0.5f, 1f);
         s.Creature.HandleUpdateTarget(new TargetInfo { ObjectId = 43, Status = TargetStatus.ExitWorld });
-        Assert.Equal(42u, s.Creature.GetStickyObjectId());
+        Assert.Equal(42u, s.Creature.StickyObjectId);
         s.Creature.HandleUpdateTarget(new TargetInfo { ContextId = 1, ObjectId = 42, Status = TargetStatus.ExitWorld });
-        Assert.Equal(42u, s.Creature.GetStickyObjectId());   // context != 0 is not forwarded (acclient.c:319966)
+        Assert.Equal(42u, s.Creature.StickyObjectId);   // context != 0 is not forwarded (acclient.c:319966)
         s.Creature.HandleUpdateTarget(new TargetInfo { ObjectId = 42, Status = TargetStatus.Teleported });
-        Assert.Equal(0u, s.Creature.GetStickyObjectId());
+        Assert.Equal(0u, s.Creature.StickyObjectId);
     }
 
     [Fact]
@@ -204,18 +204,18 @@ public class StickyAndConstraintTests
     {
         var s = new ManagerScene(Start);
         s.Managers.ConstrainTo(ManagerScene.At(Start + new Vector3(0f, count, 0f)), 10f, 50f);
-        Assert.Equal(expected, s.Creature.IsFullyConstrained());
+        Assert.Equal(expected, s.Creature.IsFullyConstrained);
     }
 
     [Fact]
     public void ConstraintDistances_AreFiveAndTwentyIndoorsTenAndFiftyOutdoors()
     {
         var s = new ManagerScene(Start);
-        Assert.Equal(10.0, s.Creature.GetStartConstraintDistance());
-        Assert.Equal(50.0, s.Creature.GetMaxConstraintDistance());
+        Assert.Equal(10.0, s.Creature.StartConstraintDistance);
+        Assert.Equal(50.0, s.Creature.MaxConstraintDistance);
         s.Creature.SetPositionSimple(new Position(ManagerScene.Block | 0x0100u, Frame.FromHeading(Start, 0f)), true);
-        Assert.Equal(5.0, s.Creature.GetStartConstraintDistance());
-        Assert.Equal(20.0, s.Creature.GetMaxConstraintDistance());
+        Assert.Equal(5.0, s.Creature.StartConstraintDistance);
+        Assert.Equal(20.0, s.Creature.MaxConstraintDistance);
     }
 
     [Fact]
@@ -223,7 +223,7 @@ public class StickyAndConstraintTests
     {
         var s = new ManagerScene(Start);
         s.Managers.ConstrainTo(ManagerScene.At(Start + new Vector3(0f, 30f, 0f)), 10f, 50f);
-        s.Managers.UnConstrain();
+        s.Managers.StopConstraining();
         Frame offset = Frame.FromHeading(new Vector3(0f, 1f, 0f), 0f);
         s.Managers.ConstraintManager!.AdjustOffset(ref offset, 0.1);
         Assert.Equal(1f, offset.Origin.Y);

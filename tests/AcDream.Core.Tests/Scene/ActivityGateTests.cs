@@ -113,8 +113,10 @@ public class ActivityGateTests
     {
         var world = new PhysicsWorld(0.0);
         PhysicsObj obj = world.CreateObject();
-        Assert.True(obj.EnterWorld(new Position(TickTestContext.OutdoorCell, new Vector3(10f, 10f, 0f))));
-        Assert.Equal(0u, obj.CellId); // enter_cell does nothing without a part array (acclient.c:318201)
+        // enter_cell does nothing without a part array (acclient.c:318201): EnterWorld says so and changes nothing
+        Assert.False(obj.EnterWorld(new Position(TickTestContext.OutdoorCell, new Vector3(10f, 10f, 0f))));
+        Assert.Equal(0u, obj.CellId);
+        obj.StorePosition(new Position(TickTestContext.OutdoorCell, new Vector3(10f, 10f, 0f)));
         obj.SetVelocity(new Vector3(1f, 0f, 0f));
         Assert.True(world.Tick(Q));
         Assert.False(obj.IsActive);

@@ -108,7 +108,7 @@ public class DegenerateInputsNeverGiveNaNTests
         // Angular difference on the circle within 1e-3 degrees (float heading resolution near 360 is ~3e-5).
         Frame f = Frame.Identity;
         f.SetHeading(heading);
-        double back = f.GetHeading();
+        double back = f.Heading;
         Assert.InRange(back, 0.0, 360.0);
         double diff = Math.Abs(((back - heading) % 360.0 + 540.0) % 360.0 - 180.0);
         Assert.True(diff < 1e-3, $"{heading} -> {back}");
@@ -122,6 +122,6 @@ public class DegenerateInputsNeverGiveNaNTests
         b.SetRotate(-a.Qw, -a.Qx, -a.Qy, -a.Qz);
         var p = new Vector3(0.3f, -0.7f, 0.2f);
         Assert.True(Vector3.Distance(a.LocalToGlobal(p), b.LocalToGlobal(p)) < 1e-6f);
-        Assert.Equal(a.GetHeading(), b.GetHeading(), 5);
+        Assert.Equal(a.Heading, b.Heading, 5);
     }
 }

@@ -77,7 +77,7 @@ public class FramePropertyTests
             float h = milli / 1000f;
             Frame f = Frame.Identity;
             f.SetHeading(h);
-            double back = f.GetHeading();
+            double back = f.Heading;
             double diff = Math.Abs(((back - h) % 360.0 + 540.0) % 360.0 - 180.0);
             return diff < 1e-3 && back >= 0.0 && back < 360.0;
         }));

@@ -53,7 +53,7 @@ public class FrameSpinStaysNormalisedTests
         }
 
         double expected = (9000 * (double)-w.Z * (180.0 / Math.PI)) % 360.0;
-        double diff = Math.Abs(((f.GetHeading() - expected) % 360.0 + 540.0) % 360.0 - 180.0);
-        Assert.True(diff < 0.1, $"heading {f.GetHeading()} vs {expected}");
+        double diff = Math.Abs(((f.Heading - expected) % 360.0 + 540.0) % 360.0 - 180.0);
+        Assert.True(diff < 0.1, $"heading {f.Heading} vs {expected}");
     }
 }

@@ -164,16 +164,17 @@ public class HookRemovesItsObjectTests
     }
 
     [Fact]
-    public void FadeOnARemovedObject_TakesItsEndValue_AndRentsNoHook()
+    public void FadeOnARemovedObject_IsRefused_AndRentsNoHook()
     {
         // A removed object is never ticked again: a pooled fade on it would never return to the pool (64 fades on removed
-        // objects would empty it). The fade takes its end value at once; the pool keeps all 64.
+        // objects would empty it). A removed object refuses every mutator; the pool keeps all 64.
         var world = new PhysicsWorld();
         PhysicsObj obj = Create(world, 1);
+        float before = obj.Translucency;
         world.RemoveObject(obj);
         Assert.Equal(Capacity, world.FreeHookCount);
-        obj.SetTranslucency(0.75f, 2.0);
-        Assert.Equal(0.75f, obj.Translucency);
+        Assert.Throws<System.InvalidOperationException>(() => obj.SetTranslucency(0.75f, 2.0));
+        Assert.Equal(before, obj.Translucency);
         Assert.Equal(Capacity, world.FreeHookCount);
     }
 }

@@ -78,7 +78,7 @@ public class NonFiniteInputsAreRefusedTests
         h.Add(im.OriginalDistance);
         ConstraintManager? cm = o.PositionManager!.ConstraintManager;
         h.Add(cm is null ? 0u : cm.IsConstrained ? 2u : 1u);
-        h.Add(o.GetStickyObjectId());
+        h.Add(o.StickyObjectId);
         h.Add(o.GetUpdateTime(PhysicsTimeStamp.Position));
         h.Add(o.GetUpdateTime(PhysicsTimeStamp.Teleport));
         return h.Value;

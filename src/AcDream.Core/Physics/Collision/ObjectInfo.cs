@@ -50,8 +50,8 @@ internal sealed partial class ObjectInfo
         Object = obj;
         State = state;
         Scale = obj.Scale;
-        StepUpHeight = (float)obj.GetStepUpHeight();
-        StepDownHeight = (float)obj.GetStepDownHeight();
+        StepUpHeight = obj.StepUpHeight;
+        StepDownHeight = obj.StepDownHeight;
         Ethereal = (obj.State & PhysicsState.Ethereal) != 0;
         StepDown = (obj.State & PhysicsState.Missile) == 0;
         AddWeenieState(obj.Weenie);

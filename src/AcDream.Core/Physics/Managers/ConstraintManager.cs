@@ -115,11 +115,12 @@ public sealed class ConstraintManager
         ConstraintPosOffset = (float)ManagerMath.Distance(p, PhysicsObj.Position);
     }
 
-    /// <summary>Lifts the constraint (the count is kept).</summary>
+    /// <summary>Stops constraining: lifts the constraint (the count is kept). Retail
+    /// <c>ConstraintManager::UnConstrain</c>.</summary>
     // retail: ConstraintManager::UnConstrain (acclient.c:389410)
-    public void UnConstrain() => IsConstrained = false;
+    public void StopConstraining() => IsConstrained = false;
 
     /// <summary>True when the count exceeds 90 % of the max distance (checked even when not constrained, as retail).</summary>
     // retail: ConstraintManager::IsFullyConstrained (acclient.c:389416)
-    public bool IsFullyConstrained() => ConstraintDistanceMax * FullyConstrainedFraction < ConstraintPosOffset;
+    public bool IsFullyConstrained => ConstraintDistanceMax * FullyConstrainedFraction < ConstraintPosOffset;
 }

@@ -71,7 +71,7 @@ public sealed partial class InterpolationManager
         if (frames >= ProgressCheckFrames)
         {
             float progressMade = OriginalDistance - currDistance;
-            bool passed = obj.GetStickyObjectId() != 0
+            bool passed = obj.StickyObjectId != 0
                 || (progressMade >= PhysicsGlobals.Epsilon
                     && (double)progressMade / ProgressQuantum / myMaxSpeed >= MinProgressFraction);
             if (!passed)

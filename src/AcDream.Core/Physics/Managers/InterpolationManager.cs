@@ -80,9 +80,6 @@ public sealed partial class InterpolationManager
     /// <summary>Number of queued nodes (0 to <see cref="MaxQueueLength"/>).</summary>
     public int Count => _count;
 
-    /// <summary>True while nodes are queued (retail <c>position_queue.head_ != 0</c>, PositionManager::IsInterpolating).</summary>
-    public bool IsActive => _count > 0;
-
     /// <summary>True when the newest near-branch update asked to keep the object's own heading (retail <c>keep_heading</c>).</summary>
     public bool KeepHeading { get; private set; }
 
@@ -104,9 +101,10 @@ public sealed partial class InterpolationManager
     /// <c>blipto_position</c>; cell 0 until a node fails).</summary>
     public Position BliptoPosition { get; private set; }
 
-    /// <summary>True while nodes are queued.</summary>
+    /// <summary>True while nodes are queued (retail <c>position_queue.head_ != 0</c>, read by
+    /// <c>PositionManager::IsInterpolating</c>).</summary>
     // retail: PositionManager::IsInterpolating (acclient.c:388475)
-    public bool IsInterpolating() => _count > 0;
+    public bool IsInterpolating => _count > 0;
 
     /// <summary>The queued node at <paramref name="index"/> (0 = head, the node being approached).</summary>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="index"/> is outside [0, <see cref="Count"/>).</exception>
@@ -121,7 +119,7 @@ public sealed partial class InterpolationManager
     }
 
     /// <summary>
-    /// Queues the server position <paramref name="p"/>. Near (within <see cref="PhysicsObj.GetAutonomyBlipDistance"/> of the
+    /// Queues the server position <paramref name="p"/>. Near (within <see cref="PhysicsObj.AutonomyBlipDistance"/> of the
     /// newest queued position, or of the object when none): if the object is already within 0.05 m it stops interpolating
     /// (turning to <paramref name="p"/>'s heading unless <paramref name="keepHeading"/>); otherwise trailing nodes within 0.05 m
     /// of <paramref name="p"/> are dropped, the head is evicted while the queue is full, and <paramref name="p"/> is appended.
@@ -212,9 +210,6 @@ public sealed partial class InterpolationManager
         OriginalDistance = BigDistance;
     }
 
-    /// <summary>Same as <see cref="StopInterpolating"/>.</summary>
-    public void Clear() => StopInterpolating();
-
     private void InterpolateToInternal(in Position p, bool keepHeading, in Position body)
     {
         // The newest queued Position is the reference; a Jump/Velocity tail or an empty queue measures from the body.
@@ -222,7 +217,7 @@ public sealed partial class InterpolationManager
             ? ManagerMath.Distance(Tail.Position, p)
             : ManagerMath.Distance(body, p);
         float pa = (float)refDistance;
-        if (PhysicsObj.GetAutonomyBlipDistance() >= pa)
+        if (PhysicsObj.AutonomyBlipDistance >= pa)
         {
             if (ManagerMath.Distance(body, p) > DesiredDistance)
             {
@@ -251,7 +246,7 @@ public sealed partial class InterpolationManager
                 // Already there: face the reported heading (unless kept) and stop.
                 if (!keepHeading)
                 {
-                    float degrees = (float)p.Frame.GetHeading();
+                    float degrees = (float)p.Frame.Heading;
                     PhysicsObj.SetHeading(degrees);
                 }
 
@@ -281,7 +276,7 @@ public sealed partial class InterpolationManager
         n.Extent = 0f;
         if (KeepHeading)
         {
-            float heading = (float)body.Frame.GetHeading();
+            float heading = (float)body.Frame.Heading;
             n.Position.Frame.SetHeading(heading);
         }
 

@@ -76,7 +76,7 @@ public sealed class PositionManager
 
     /// <summary>True while interpolation nodes are queued.</summary>
     // retail: PositionManager::IsInterpolating (acclient.c:388475)
-    public bool IsInterpolating() => InterpolationManager is not null && InterpolationManager.IsInterpolating();
+    public bool IsInterpolating => InterpolationManager is not null && InterpolationManager.IsInterpolating;
 
     /// <summary>Sticks the object to another object for one second (see <see cref="StickyManager.StickTo"/>).</summary>
     /// <param name="objectId">Target id.</param>
@@ -97,13 +97,13 @@ public sealed class PositionManager
         StickyManager.StickTo(objectId, radius, height);
     }
 
-    /// <summary>Releases a sticky target.</summary>
+    /// <summary>Stops sticking: releases the sticky target, if any (retail <c>PositionManager::UnStick</c>).</summary>
     // retail: PositionManager::UnStick (acclient.c:388306)
-    public void UnStick() => StickyManager?.HandleExitWorld();
+    public void StopSticking() => StickyManager?.StopSticking();
 
     /// <summary>Id of the sticky target, or 0.</summary>
     // retail: PositionManager::GetStickyObjectID (acclient.c:388352)
-    public uint GetStickyObjectId() => StickyManager?.TargetId ?? 0u;
+    public uint StickyObjectId => StickyManager?.TargetId ?? 0u;
 
     /// <summary>Passes a target-tracking report to the sticky manager, if any.</summary>
     /// <param name="info">The report.</param>
@@ -131,9 +131,9 @@ public sealed class PositionManager
         ConstraintManager.ConstrainTo(p, startDistance, maxDistance);
     }
 
-    /// <summary>Removes the constraint.</summary>
+    /// <summary>Stops constraining: lifts the constraint, if any (retail <c>PositionManager::UnConstrain</c>).</summary>
     // retail: PositionManager::UnConstrain (acclient.c:388380)
-    public void UnConstrain() => ConstraintManager?.UnConstrain();
+    public void StopConstraining() => ConstraintManager?.StopConstraining();
 
     /// <summary>True while adjust_offset and UseTime would do nothing: no interpolation node and no pending blip, no sticky
     /// target, no constraint (the scene may then skip a resting object).</summary>
@@ -152,5 +152,5 @@ public sealed class PositionManager
 
     /// <summary>True when the constraint holds the object fully.</summary>
     // retail: PositionManager::IsFullyConstrained (acclient.c:388390)
-    public bool IsFullyConstrained() => ConstraintManager is not null && ConstraintManager.IsFullyConstrained();
+    public bool IsFullyConstrained => ConstraintManager is not null && ConstraintManager.IsFullyConstrained;
 }

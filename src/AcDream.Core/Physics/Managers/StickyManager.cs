@@ -90,7 +90,7 @@ public sealed class StickyManager
         o.Z = 0f;
 
         // Position::cylinder_distance_no_z (acclient.c:467268) kept in double until the float store of mag.
-        float r1 = (float)obj.GetRadius();
+        float r1 = obj.Radius;
         Vector3 between = body.GetOffset(targetPos);
         double cyl = Math.Sqrt((double)between.X * between.X + (double)between.Y * between.Y + (double)between.Z * between.Z)
             - ((double)r1 + TargetRadius);
@@ -129,8 +129,8 @@ public sealed class StickyManager
         o.Z = (float)(step * o.Z);
         offset.Origin = o;
 
-        float toTarget = (float)body.Heading(targetPos);
-        double turn = toTarget - body.Frame.GetHeading();
+        float toTarget = (float)body.HeadingTo(targetPos);
+        double turn = toTarget - body.Frame.Heading;
         float sought = (float)turn;
         if (Math.Abs(turn) < PhysicsGlobals.Epsilon)
         {
@@ -208,9 +208,10 @@ public sealed class StickyManager
         }
     }
 
-    /// <summary>Drops the stick (target tracking cleared, move-to cancelled).</summary>
+    /// <summary>Stops sticking: drops the stick (target tracking cleared, move-to cancelled). Retail
+    /// <c>StickyManager::HandleExitWorld</c>, which <c>PositionManager::UnStick</c> calls.</summary>
     // retail: StickyManager::HandleExitWorld (acclient.c:388501)
-    public void HandleExitWorld()
+    public void StopSticking()
     {
         if (TargetId != 0)
         {

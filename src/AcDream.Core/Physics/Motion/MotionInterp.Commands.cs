@@ -537,7 +537,7 @@ public sealed partial class MotionInterp
 
         if (((uint)PendingMotions.Head.Motion & (uint)MotionCommandClass.Action) != 0)
         {
-            obj.UnstickFromObject();
+            obj.StopSticking();
             InterpretedState.RemoveAction();
             RawState.RemoveAction();
         }

@@ -133,7 +133,7 @@ public sealed partial class MotionInterp
             return MotionError.YouCantJumpWhileInTheAir;
         }
 
-        if (obj.IsFullyConstrained())
+        if (obj.IsFullyConstrained)
         {
             return MotionError.GeneralMovementFailure;
         }

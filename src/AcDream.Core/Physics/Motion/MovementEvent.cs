@@ -35,7 +35,7 @@ public static class MovementEvent
 
         MotionInterp m = mm.GetOrCreateMotionInterpreter();
         obj.CancelMoveTo();
-        obj.UnstickFromObject();
+        obj.StopSticking();
         if (m.InqStyle() != state.CurrentStyle)
         {
             m.DoMotion(state.CurrentStyle, new MovementParameters());

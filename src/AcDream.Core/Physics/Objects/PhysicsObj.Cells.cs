@@ -44,15 +44,35 @@ public sealed partial class PhysicsObj
     /// ±<see cref="InputLimits.MaxChildOffset"/> (192 m).</param>
     /// <returns>True when attached; false when <paramref name="parent"/> already holds this object as a child.</returns>
     /// <exception cref="ArgumentException">The parent is this object or one of its descendants (a cycle), belongs to another
-    /// world, or the frame is outside that domain; nothing changes.</exception>
+    /// world or was removed from it, or the frame is outside that domain (each cause named in the message; the frame's with parameter name
+    /// <c>frame</c>); nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_parent (acclient.c:323002), simplified: no shadow cells
     public bool SetParent(PhysicsObj parent, uint partIndex, in Frame frame)
     {
+        ThrowIfRemoved();
         ArgumentNullException.ThrowIfNull(parent);
         // non-retail: the child frame's domain (InputLimits.MaxChildOffset, unit quaternion)
-        if (parent == this || parent.World != World || !InputLimits.IsChildFrameInDomain(frame))
+        if (parent == this)
         {
-            throw new ArgumentException("Invalid parent or frame.", nameof(parent));
+            throw new ArgumentException("An object cannot be its own parent.", nameof(parent));
+        }
+
+        if (parent.World != World)
+        {
+            throw new ArgumentException("The parent belongs to another world.", nameof(parent));
+        }
+
+        if (parent.RemovedFromWorld)
+        {
+            throw new ArgumentException("The parent was removed from its world.", nameof(parent));
+        }
+
+        if (!InputLimits.IsChildFrameInDomain(frame))
+        {
+            throw new ArgumentException(
+                "The child frame must have a unit quaternion (|q|² within 5 × EPSILON of 1) and each origin component within ±192 m (InputLimits.MaxChildOffset).",
+                nameof(frame));
         }
 
         // non-retail: retail accepts a parent that is a descendant; the child lists would then recurse without end
@@ -99,9 +119,11 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Detaches this object from its parent; its clock restarts and its transient state is cleared.</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::unset_parent (acclient.c:320479), simplified
     public void UnsetParent()
     {
+        ThrowIfRemoved();
         Touch();
         PhysicsObj? parent = Parent;
         if (parent is null)

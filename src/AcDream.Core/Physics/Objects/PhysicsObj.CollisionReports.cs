@@ -195,7 +195,7 @@ public sealed partial class PhysicsObj
             {
                 if (meMissile)
                 {
-                    int q = DetermineQuadrant(other.Position, (float)other.GetHeight(), Position);
+                    int q = DetermineQuadrant(other.Position, other.Height, Position);
                     listener.OnAttackCollision(this, new AtkCollisionProfile(other.Id, -1, q));
                 }
                 else
@@ -217,7 +217,7 @@ public sealed partial class PhysicsObj
         {
             if ((other.State & PhysicsState.Missile) != 0)
             {
-                int q = DetermineQuadrant(Position, (float)GetHeight(), other.Position);
+                int q = DetermineQuadrant(Position, Height, other.Position);
                 listener.OnAttackCollision(other, new AtkCollisionProfile(Id, -1, q));
             }
             else

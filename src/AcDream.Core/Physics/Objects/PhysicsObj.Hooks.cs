@@ -18,8 +18,10 @@ public sealed partial class PhysicsObj
 
     /// <summary>Pushes <paramref name="hook"/> at the head of the hook list: it runs first at the next step.</summary>
     /// <exception cref="ArgumentException">The hook already belongs to an object.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public void AddHook(PhysicsObjHook hook)
     {
+        ThrowIfRemoved();
         ArgumentNullException.ThrowIfNull(hook);
         if (hook.Owner is not null)
         {
@@ -41,9 +43,11 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Queues a one-shot animation event for the next <c>process_hooks</c> (the bag grows by doubling, from 8).</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::add_anim_hook (acclient.c:322062)
     public void AddAnimHook(IAnimHook hook)
     {
+        ThrowIfRemoved();
         ArgumentNullException.ThrowIfNull(hook);
         Touch();
         if (_animHookCount == _animHooks.Length)
@@ -85,25 +89,44 @@ public sealed partial class PhysicsObj
         int n = _animHookCount;
         if (n > 0)
         {
-            // non-retail: retail re-reads the growing count, so an anim hook queued by an anim hook ran in the same pass (and a
-            // hook that re-queues itself never returned); the hooks queued during the pass wait for the next step
-            for (int i = 0; i < n; i++)
+            int ran = 0;
+            try
             {
-                _animHooks[i]!.Execute(this);
-                // non-retail: Execute removed the object from its world, which dropped the queue
-                if (RemovedFromWorld)
+                // non-retail: retail re-reads the growing count, so an anim hook queued by an anim hook ran in the same pass
+                // (and a hook that re-queues itself never returned); the hooks queued during the pass wait for the next step
+                while (ran < n)
                 {
-                    return;
+                    IAnimHook hook = _animHooks[ran]!;
+                    // Counted before Execute: a one-shot hook that throws has run and is dropped with the others (the finally),
+                    // so the exception reaches the client once and the next step does not run the hook again.
+                    ran++;
+                    hook.Execute(this);
+                    // non-retail: Execute removed the object from its world, which dropped the queue
+                    if (RemovedFromWorld)
+                    {
+                        return;
+                    }
                 }
             }
-
-            // Retail shrinks the array to its count, then empties it; we keep the capacity so the tick does not allocate, and
-            // move the hooks queued during the pass to the front.
-            int queued = _animHookCount - n;
-            Array.Copy(_animHooks, n, _animHooks, 0, queued);
-            Array.Clear(_animHooks, queued, n);
-            _animHookCount = queued;
+            finally
+            {
+                // non-retail: the hooks that ran leave the queue also when one threw (try/finally costs nothing when none does)
+                if (!RemovedFromWorld)
+                {
+                    DropRunAnimHooks(ran);
+                }
+            }
         }
+    }
+
+    // Retail shrinks the array to its count, then empties it; we keep the capacity so the tick does not allocate, and move the
+    // hooks queued during the pass to the front.
+    private void DropRunAnimHooks(int ran)
+    {
+        int queued = _animHookCount - ran;
+        Array.Copy(_animHooks, ran, _animHooks, 0, queued);
+        Array.Clear(_animHooks, queued, ran);
+        _animHookCount = queued;
     }
 
     /// <summary>Applies one interpolated hook value to the object or its parts.</summary>
@@ -156,9 +179,11 @@ public sealed partial class PhysicsObj
     /// <param name="delta">Fade duration, seconds: finite (below EPSILON: at once).</param>
     /// <exception cref="ArgumentException">The scale is outside [0.01, 100] (also NaN, ±∞, 0, negative) or the duration is
     /// not finite (state unchanged; retail accepts any).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetScale (acclient.c:320621)
     public void SetScale(float scale, double delta)
     {
+        ThrowIfRemoved();
         ThrowIfNotFinite(scale, delta);
         // non-retail: the scale's domain (a non-positive scale made every later sweep throw)
         InputLimits.ThrowIfScaleOutside(scale, nameof(scale));
@@ -176,9 +201,11 @@ public sealed partial class PhysicsObj
     /// <summary>Sets the scale at once (retail <c>SetScaleStatic</c>).</summary>
     /// <param name="scale">The scale: in [<see cref="InputLimits.MinScale"/>, <see cref="InputLimits.MaxScale"/>] = [0.01, 100].</param>
     /// <exception cref="ArgumentException">The scale is outside [0.01, 100] (also NaN, ±∞, 0, negative); state unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetScaleStatic (acclient.c:319007)
     public void SetScaleStatic(float scale)
     {
+        ThrowIfRemoved();
         // non-retail: the scale's domain (a non-positive scale made every later sweep throw)
         InputLimits.ThrowIfScaleOutside(scale, nameof(scale));
         Touch();
@@ -189,9 +216,11 @@ public sealed partial class PhysicsObj
     /// <summary>Fades the translucency from 0 to <paramref name="translucency"/> over <paramref name="delta"/> seconds (retail
     /// starts every such fade at 0), or sets it at once when delta &lt; EPSILON.</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetTranslucency (acclient.c:318693)
     public void SetTranslucency(float translucency, double delta)
     {
+        ThrowIfRemoved();
         ThrowIfNotFinite(translucency, delta);
         Touch();
         if (delta >= PhysicsGlobals.Epsilon)
@@ -206,9 +235,11 @@ public sealed partial class PhysicsObj
 
     /// <summary>Fades the translucency from <paramref name="start"/> to <paramref name="end"/> over <paramref name="delta"/> seconds.</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetTranslucency2 (acclient.c:316920)
     public void SetTranslucency2(float start, float end, double delta)
     {
+        ThrowIfRemoved();
         ThrowIfNotFinite(start, delta);
         ThrowIfNotFinite(end, delta);
         Touch();
@@ -236,42 +267,64 @@ public sealed partial class PhysicsObj
 
     /// <summary>Fades one part's translucency (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPartTranslucency (acclient.c:318758)
-    public void SetPartTranslucency(uint part, float start, float end, double delta) =>
+    public void SetPartTranslucency(uint part, float start, float end, double delta)
+    {
+        ThrowIfRemoved();
         FadeOrSet(PhysicsHookType.PartTranslucency, part, start, end, delta);
+    }
 
     /// <summary>Fades the luminosity (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetLuminosity (acclient.c:318826)
-    public void SetLuminosity(float start, float end, double delta) =>
+    public void SetLuminosity(float start, float end, double delta)
+    {
+        ThrowIfRemoved();
         FadeOrSet(PhysicsHookType.Luminosity, 0, start, end, delta);
+    }
 
     /// <summary>Fades one part's luminosity (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPartLuminosity (acclient.c:318792)
-    public void SetPartLuminosity(uint part, float start, float end, double delta) =>
+    public void SetPartLuminosity(uint part, float start, float end, double delta)
+    {
+        ThrowIfRemoved();
         FadeOrSet(PhysicsHookType.PartLuminosity, part, start, end, delta);
+    }
 
     /// <summary>Fades the diffusion (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetDiffusion (acclient.c:318894)
-    public void SetDiffusion(float start, float end, double delta) =>
+    public void SetDiffusion(float start, float end, double delta)
+    {
+        ThrowIfRemoved();
         FadeOrSet(PhysicsHookType.Diffusion, 0, start, end, delta);
+    }
 
     /// <summary>Fades one part's diffusion (or sets it at once when delta &lt; EPSILON).</summary>
     /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPartDiffusion (acclient.c:318860)
-    public void SetPartDiffusion(uint part, float start, float end, double delta) =>
+    public void SetPartDiffusion(uint part, float start, float end, double delta)
+    {
+        ThrowIfRemoved();
         FadeOrSet(PhysicsHookType.PartDiffusion, part, start, end, delta);
+    }
 
     /// <summary>
     /// Plays physics script <paramref name="scriptId"/> after a random delay in [0, <paramref name="delta"/>] seconds, or at once
     /// when delta &lt; EPSILON (only while the object is in a cell).
     /// </summary>
     /// <exception cref="ArgumentException"><paramref name="delta"/> is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::CallPES (acclient.c:318972)
     public void CallPes(uint scriptId, double delta)
     {
+        ThrowIfRemoved();
         ThrowIfNotFinite(0f, delta);
         Touch();
         if (delta >= PhysicsGlobals.Epsilon)

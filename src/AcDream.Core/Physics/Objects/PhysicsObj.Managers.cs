@@ -9,9 +9,11 @@ public sealed partial class PhysicsObj
 {
     /// <summary>Creates the position manager if absent and activates a non-static object (retail <c>MakePositionManager</c>).</summary>
     /// <returns>The position manager.</returns>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::MakePositionManager (acclient.c:317430)
     public PositionManager MakePositionManager()
     {
+        ThrowIfRemoved();
         Touch();
         PositionManager ??= new PositionManager(this);
         ActivateIfNotStatic();
@@ -32,9 +34,11 @@ public sealed partial class PhysicsObj
     /// </summary>
     /// <returns>The interpreter: a <see cref="Motion.MotionInterp"/> for the retail movement manager; whatever a client's own
     /// movement manager answers (<see cref="IMovementManager.GetOrCreateMotionInterpreter"/>, possibly null).</returns>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::get_minterp (acclient.c:319279)
     public IMotionInterpreter? GetOrCreateMotionInterpreter()
     {
+        ThrowIfRemoved();
         if (Movement is null)
         {
             MakeMovementManager(true);
@@ -53,9 +57,11 @@ public sealed partial class PhysicsObj
     /// <param name="keepHeading">True to keep the object's heading.</param>
     /// <exception cref="System.ArgumentException">The position is outside that domain; checked before the position manager
     /// is created (state unchanged).</exception>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::InterpolateTo (acclient.c:317580)
     public void InterpolateTo(in Position p, bool keepHeading)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
 
@@ -63,16 +69,18 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Stops interpolating.</summary>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::StopInterpolating (acclient.c:315836)
     public void StopInterpolating()
     {
+        ThrowIfRemoved();
         Touch();
         PositionManager?.StopInterpolating();
     }
 
-    /// <summary>True while interpolation nodes are queued.</summary>
+    /// <summary>True while interpolation nodes are queued (retail <c>CPhysicsObj::IsInterpolating</c>).</summary>
     // retail: CPhysicsObj::IsInterpolating (acclient.c:315846)
-    public bool IsInterpolating() => PositionManager is not null && PositionManager.IsInterpolating();
+    public bool IsInterpolating => PositionManager is not null && PositionManager.IsInterpolating;
 
     /// <summary>Constrains the object near <paramref name="p"/> (creating the position manager).</summary>
     /// <param name="p">The anchor: the position domain of <see cref="StorePosition"/>.</param>
@@ -80,9 +88,11 @@ public sealed partial class PhysicsObj
     /// <param name="maxDistance">Distance at which it holds fully, metres: finite.</param>
     /// <exception cref="System.ArgumentException">The position is outside that domain or a distance is not finite; checked
     /// before the position manager is created (state unchanged).</exception>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::ConstrainTo (acclient.c:317590)
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         if (!float.IsFinite(startDistance) || !float.IsFinite(maxDistance))
         {
@@ -94,61 +104,75 @@ public sealed partial class PhysicsObj
         MakePositionManager().ConstrainTo(p, startDistance, maxDistance);
     }
 
-    /// <summary>True when the constraint manager holds the object fully.</summary>
+    /// <summary>True when the constraint manager holds the object fully
+    /// (retail <c>CPhysicsObj::IsFullyConstrained</c>).</summary>
     // retail: CPhysicsObj::IsFullyConstrained (acclient.c:315932)
-    public bool IsFullyConstrained() => PositionManager is not null && PositionManager.IsFullyConstrained();
+    public bool IsFullyConstrained => PositionManager is not null && PositionManager.IsFullyConstrained;
 
-    /// <summary>Id of the object this one sticks to, or 0.</summary>
+    /// <summary>Id of the object this one sticks to, or 0 (retail <c>CPhysicsObj::get_sticky_object_id</c>).</summary>
     // retail: CPhysicsObj::get_sticky_object_id (acclient.c:315807)
-    public uint GetStickyObjectId() => PositionManager?.GetStickyObjectId() ?? 0u;
+    public uint StickyObjectId => PositionManager?.StickyObjectId ?? 0u;
 
-    /// <summary>Stops sticking to an object.</summary>
+    /// <summary>Stops sticking to an object (retail <c>CPhysicsObj::unstick_from_object</c>).</summary>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::unstick_from_object (acclient.c:315797)
-    public void UnstickFromObject()
+    public void StopSticking()
     {
+        ThrowIfRemoved();
         Touch();
-        PositionManager?.UnStick();
+        PositionManager?.StopSticking();
     }
 
     /// <summary>True when the object is the world's player.</summary>
     public bool IsPlayer => World.Player == this;
 
-    /// <summary>Distance beyond which an interpolating object blips, metres: player 25 indoors / 100 outdoors, others 20 / 100.</summary>
+    /// <summary>Distance beyond which an interpolating object blips, metres: player 25 indoors / 100 outdoors, others 20 / 100
+    /// (retail <c>CPhysicsObj::GetAutonomyBlipDistance</c>).</summary>
     // retail: CPhysicsObj::GetAutonomyBlipDistance (acclient.c:315860)
-    public double GetAutonomyBlipDistance()
+    public double AutonomyBlipDistance
     {
-        bool indoor = (_position.ObjCellId & 0xFFFFu) >= 0x100u;
-        if (IsPlayer)
+        get
         {
-            return indoor ? 25.0 : 100.0;
-        }
+            bool indoor = (_position.ObjCellId & 0xFFFFu) >= 0x100u;
+            if (IsPlayer)
+            {
+                return indoor ? 25.0 : 100.0;
+            }
 
-        return indoor ? 20.0 : 100.0;
+            return indoor ? 20.0 : 100.0;
+        }
     }
 
-    /// <summary>Distance at which a constraint starts to act, metres: 5 indoors / 10 outdoors.</summary>
+    /// <summary>Distance at which a constraint starts to act, metres: 5 indoors / 10 outdoors
+    /// (retail <c>CPhysicsObj::GetStartConstraintDistance</c>).</summary>
     // retail: CPhysicsObj::GetStartConstraintDistance (acclient.c:315884)
-    public double GetStartConstraintDistance() => (_position.ObjCellId & 0xFFFFu) >= 0x100u ? 5.0 : 10.0;
+    public double StartConstraintDistance => (_position.ObjCellId & 0xFFFFu) >= 0x100u ? 5.0 : 10.0;
 
-    /// <summary>Distance at which a constraint holds fully, metres: 20 indoors / 50 outdoors.</summary>
+    /// <summary>Distance at which a constraint holds fully, metres: 20 indoors / 50 outdoors
+    /// (retail <c>CPhysicsObj::GetMaxConstraintDistance</c>).</summary>
     // retail: CPhysicsObj::GetMaxConstraintDistance (acclient.c:315908)
-    public double GetMaxConstraintDistance() => (_position.ObjCellId & 0xFFFFu) >= 0x100u ? 20.0 : 50.0;
+    public double MaxConstraintDistance => (_position.ObjCellId & 0xFFFFu) >= 0x100u ? 20.0 : 50.0;
 
-    /// <summary>Bounding radius, metres (0 without a part array).</summary>
+    /// <summary>Bounding radius, metres: the part array's (<see cref="Parts.IPartArray.Radius"/>), 0 without one. Retail
+    /// <c>CPhysicsObj::GetRadius</c>, which hands back the part array's float (in x87's st0; every caller stores it as a
+    /// float).</summary>
     // retail: CPhysicsObj::GetRadius (acclient.c:315672)
-    public double GetRadius() => PartArray is not null ? PartArray.Radius : 0.0;
+    public float Radius => PartArray is not null ? PartArray.Radius : 0f;
 
-    /// <summary>Height, metres (0 without a part array).</summary>
+    /// <summary>Height, metres: the part array's (<see cref="Parts.IPartArray.Height"/>), 0 without one. Retail
+    /// <c>CPhysicsObj::GetHeight</c> (the part array's float).</summary>
     // retail: CPhysicsObj::GetHeight (acclient.c:315686)
-    public double GetHeight() => PartArray is not null ? PartArray.Height : 0.0;
+    public float Height => PartArray is not null ? PartArray.Height : 0f;
 
-    /// <summary>Step-up height, metres (0 without a part array).</summary>
+    /// <summary>Step-up height, metres: the part array's (<see cref="Parts.IPartArray.StepUpHeight"/>), 0 without one. Retail
+    /// <c>CPhysicsObj::GetStepUpHeight</c> (the part array's float).</summary>
     // retail: CPhysicsObj::GetStepUpHeight (acclient.c:315700)
-    public double GetStepUpHeight() => PartArray is not null ? PartArray.StepUpHeight : 0.0;
+    public float StepUpHeight => PartArray is not null ? PartArray.StepUpHeight : 0f;
 
-    /// <summary>Step-down height, metres (0 without a part array).</summary>
+    /// <summary>Step-down height, metres: the part array's (<see cref="Parts.IPartArray.StepDownHeight"/>), 0 without one. Retail
+    /// <c>CPhysicsObj::GetStepDownHeight</c> (the part array's float).</summary>
     // retail: CPhysicsObj::GetStepDownHeight (acclient.c:315714)
-    public double GetStepDownHeight() => PartArray is not null ? PartArray.StepDownHeight : 0.0;
+    public float StepDownHeight => PartArray is not null ? PartArray.StepDownHeight : 0f;
 
     private void ActivateIfNotStatic()
     {

@@ -13,9 +13,11 @@ public sealed partial class PhysicsObj
     /// activates a non-static object.
     /// </summary>
     /// <returns>The movement manager.</returns>
+    /// <exception cref="System.InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::MakeMovementManager (acclient.c:317453)
     public IMovementManager MakeMovementManager(bool initMotion)
     {
+        ThrowIfRemoved();
         Touch();
         if (Movement is null)
         {

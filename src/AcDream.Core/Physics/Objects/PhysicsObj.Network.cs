@@ -19,9 +19,11 @@ public sealed partial class PhysicsObj
     /// True when <paramref name="newTime"/> is newer than the stored stamp in 16-bit wrap-around order (a difference above
     /// 0x7FFF means the counter wrapped); a newer stamp is stored.
     /// </summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::newer_event (acclient.c:143014)
     public bool NewerEvent(PhysicsTimeStamp stamp, ushort newTime)
     {
+        ThrowIfRemoved();
         ushort old = _updateTimes[StampIndex(stamp)];
         bool newer = Math.Abs(newTime - old) > 0x7FFF ? newTime < old : old < newTime;
         if (newer)
@@ -42,9 +44,13 @@ public sealed partial class PhysicsObj
     /// <param name="teleportTimestamp">The report's 16-bit teleport timestamp (any value; wrap-around order).</param>
     /// <param name="contact">The report says the object is on the ground.</param>
     /// <exception cref="ArgumentException">The position is outside that domain; state unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450)
-    public bool MoveOrTeleport(in Position p, ushort teleportTimestamp, bool contact) =>
-        MoveOrTeleportResult(p, teleportTimestamp, contact) >= ReceivedPositionResult.Interpolating;
+    public bool MoveOrTeleport(in Position p, ushort teleportTimestamp, bool contact)
+    {
+        ThrowIfRemoved();
+        return MoveOrTeleportResult(p, teleportTimestamp, contact) >= ReceivedPositionResult.Interpolating;
+    }
 
     // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450), answering which branch it took
     private ReceivedPositionResult MoveOrTeleportResult(in Position p, ushort teleportTimestamp, bool contact)
@@ -93,14 +99,16 @@ public sealed partial class PhysicsObj
         : ReceivedPositionResult.PlacementFailed;
 
     /// <summary>Drops every move-to, stickiness, interpolation, constraint and target before a teleport.</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::teleport_hook (acclient.c:322236)
     public void TeleportHook()
     {
+        ThrowIfRemoved();
         Touch();
         Movement?.CancelMoveTo(MotionError.ITeleported);
-        PositionManager?.UnStick();
+        PositionManager?.StopSticking();
         PositionManager?.StopInterpolating();
-        PositionManager?.UnConstrain();
+        PositionManager?.StopConstraining();
         TargetManager?.ClearTarget();
         World.Sweep.ReportCollisionEnd(this, true);
     }

@@ -15,7 +15,18 @@ public sealed partial class PhysicsObj
 {
     /// <summary>The game object's answers (creature, player, PK...), or null for a plain physics object. Retail:
     /// <c>weenie_obj</c>.</summary>
-    public IWeenieObject? Weenie { get; set; }
+    /// <exception cref="System.InvalidOperationException">Set on an object removed from its world.</exception>
+    public IWeenieObject? Weenie
+    {
+        get => _weenie;
+        set
+        {
+            ThrowIfRemoved();
+            _weenie = value;
+        }
+    }
+
+    private IWeenieObject? _weenie;
 
     /// <summary>
     /// Tests this object, as an obstacle, against <paramref name="transition"/> (another object's sweep), with retail's

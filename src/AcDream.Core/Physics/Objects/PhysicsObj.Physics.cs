@@ -185,9 +185,11 @@ public sealed partial class PhysicsObj
     /// <remarks>An object without a part array is in no cell and never moves, whatever its velocity (retail); its
     /// <see cref="SetupIssues"/> reports <see cref="ObjectSetupIssues.NoPartArray"/>.</remarks>
     /// <exception cref="System.ArgumentException">A component is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_velocity (acclient.c:318577)
     public void SetVelocity(Vector3 velocity)
     {
+        ThrowIfRemoved();
         ThrowIfNotFinite(velocity, nameof(velocity));
         Touch();
         // retail: Vector3::operator!= (acclient.c:156312): some axis differs by more than EPSILON
@@ -225,9 +227,11 @@ public sealed partial class PhysicsObj
 
     /// <summary>Sets the velocity from local axes (rotated to world axes by the object's frame), then <see cref="SetVelocity"/>.</summary>
     /// <exception cref="System.ArgumentException">A component is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_local_velocity (acclient.c:318617)
     public void SetLocalVelocity(Vector3 localVelocity)
     {
+        ThrowIfRemoved();
         ThrowIfNotFinite(localVelocity, nameof(localVelocity));
         Touch();
         SetVelocity(_position.Frame.LocalToGlobalVec(localVelocity));
@@ -235,9 +239,11 @@ public sealed partial class PhysicsObj
 
     /// <summary>Sets the angular velocity, rad/s in world axes (a plain store, as retail).</summary>
     /// <exception cref="System.ArgumentException">A component is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_omega (acclient.c:316612)
     public void SetOmega(Vector3 omega)
     {
+        ThrowIfRemoved();
         ThrowIfNotFinite(omega, nameof(omega));
         Touch();
         _omega = omega;
@@ -247,8 +253,17 @@ public sealed partial class PhysicsObj
     /// Activates (restarting the clock of an inactive object; refused for a STATIC object) or deactivates the object.
     /// </summary>
     /// <returns>False only when activation was refused.</returns>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_active (acclient.c:316979)
     public bool SetActive(bool active)
+    {
+        ThrowIfRemoved();
+        return SetActiveInternal(active);
+    }
+
+    /// <summary>The engine's call (no removal check).</summary>
+    // retail: CPhysicsObj::set_active (acclient.c:316979)
+    internal bool SetActiveInternal(bool active)
     {
         Touch();
         if (active)
@@ -272,8 +287,17 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Sets or clears ON_WALKABLE, telling the movement manager on a change, then recomputes the acceleration.</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_on_walkable (acclient.c:318501)
     public void SetOnWalkable(bool onWalkable)
+    {
+        ThrowIfRemoved();
+        SetOnWalkableInternal(onWalkable);
+    }
+
+    /// <summary>The engine's call (no removal check).</summary>
+    // retail: CPhysicsObj::set_on_walkable (acclient.c:318501)
+    internal void SetOnWalkableInternal(bool onWalkable)
     {
         Touch();
         bool was = (_transientState & TransientState.OnWalkable) != 0;
@@ -302,9 +326,11 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Clears contact, walkable, sliding, water, the stationary bits and ACTIVE (retail <c>clear_transient_states</c>).</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::clear_transient_states (acclient.c:319024)
     public void ClearTransientStates()
     {
+        ThrowIfRemoved();
         Touch();
         _transientState &= ~TransientState.Contact;
         CalcAcceleration();
@@ -326,8 +352,17 @@ public sealed partial class PhysicsObj
     /// <see cref="CollisionSweep"/>) it stays ethereal and CHECK_ETHEREAL is set so the next step retries.
     /// </summary>
     /// <returns>True when the request took effect now.</returns>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_ethereal (acclient.c:319046)
     public bool SetEthereal(bool ethereal)
+    {
+        ThrowIfRemoved();
+        return SetEtherealInternal(ethereal);
+    }
+
+    /// <summary>The engine's call (no removal check).</summary>
+    // retail: CPhysicsObj::set_ethereal (acclient.c:319046)
+    internal bool SetEtherealInternal(bool ethereal)
     {
         Touch();
         if (ethereal)

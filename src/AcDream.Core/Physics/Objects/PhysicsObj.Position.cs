@@ -16,9 +16,11 @@ public sealed partial class PhysicsObj
     /// (<see cref="InputLimits.MaxCoordinate"/>; outdoor: x, y in [−192, 384], see <see cref="InputLimits.OutdoorMargin"/>).</param>
     /// <exception cref="ArgumentException">The frame is outside that domain (state unchanged; retail would store it, and would
     /// zero a NaN quaternion whose origin is valid: that repair is kept for the engine's own steps).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_frame (acclient.c:321327)
     public void SetFrame(in Frame frame)
     {
+        ThrowIfRemoved();
         // non-retail: the frame's domain is checked before anything changes (retail stores any frame)
         InputLimits.ThrowIfOutside(_position.ObjCellId, frame, nameof(frame));
         Touch();
@@ -49,9 +51,11 @@ public sealed partial class PhysicsObj
     /// <summary>Stores a frame with no validity repair (retail <c>set_initial_frame</c>).</summary>
     /// <param name="frame">The frame: the domain of <see cref="SetFrame"/> (unit quaternion, origin in the cell's domain).</param>
     /// <exception cref="ArgumentException">The frame is outside that domain (state unchanged; retail would store it).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_initial_frame (acclient.c:321355)
     public void SetInitialFrame(in Frame frame)
     {
+        ThrowIfRemoved();
         // non-retail: the frame's domain is checked before anything changes
         InputLimits.ThrowIfOutside(_position.ObjCellId, frame, nameof(frame));
         Touch();
@@ -65,12 +69,15 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Turns the object to face <paramref name="degrees"/> (clockwise from north), keeping its origin.</summary>
-    /// <param name="degrees">Compass heading, degrees: any finite value (wrapped).</param>
-    /// <exception cref="ArgumentException">The heading is NaN or infinite.</exception>
+    /// <param name="degrees">Compass heading, degrees (the type of <see cref="Position.Heading"/>): any value whose float
+    /// rounding is finite (wrapped; rounded to float first, as retail's <c>set_heading(float)</c>).</param>
+    /// <exception cref="ArgumentException">The heading is NaN or infinite (also when its float rounding is).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_heading (acclient.c:321376)
-    public void SetHeading(float degrees)
+    public void SetHeading(double degrees)
     {
-        if (!float.IsFinite(degrees))
+        ThrowIfRemoved();
+        if (!float.IsFinite((float)degrees))
         {
             throw new ArgumentException("Heading must be finite.", nameof(degrees));
         }
@@ -86,9 +93,11 @@ public sealed partial class PhysicsObj
     /// <param name="p">The position: a unit quaternion and an origin in the position domain of its cell id
     /// (<see cref="InputLimits"/>: every component within ±65,536 m; outdoor: x, y in [−192, 384]).</param>
     /// <exception cref="ArgumentException">The position is outside that domain (state unchanged).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::store_position (acclient.c:321388)
     public void StorePosition(in Position p)
     {
+        ThrowIfRemoved();
         // non-retail: the position's domain is checked before anything changes (retail stores any position)
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
@@ -121,9 +130,11 @@ public sealed partial class PhysicsObj
     /// <param name="sliding">True to let the placement slide.</param>
     /// <exception cref="ArgumentException">The position is outside that domain (NaN, non-unit quaternion, origin out of
     /// range); state unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPositionSimple (acclient.c:323420)
     public SetPositionError SetPositionSimple(in Position p, bool sliding)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
         SetPositionFlags flags = SetPositionFlags.Teleport | SetPositionFlags.SendPositionEvent;
@@ -140,9 +151,11 @@ public sealed partial class PhysicsObj
     /// <param name="flags">The placement flags.</param>
     /// <exception cref="ArgumentException">The position is outside that domain (NaN, non-unit quaternion, origin out of
     /// range); state unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPosition (acclient.c:323289)
     public SetPositionError SetPosition(in Position p, SetPositionFlags flags)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
         return World.Sweep.SetPosition(this, p, flags);
@@ -152,17 +165,23 @@ public sealed partial class PhysicsObj
     /// Enters the world at <paramref name="p"/>: stores the position, restarts the clock, places the object with SLIDE and,
     /// on success, activates it and tells the part array and movement manager.
     /// </summary>
-    /// <returns>False when the object has a parent or could not be placed. False, with nothing changed, when the position's
-    /// cell does not exist or is not loaded (an outdoor cell whose landblock the sweep's cells do not hold, an indoor cell not
-    /// loaded, an invalid cell id): the object stays where it was, out of the world if it was.</returns>
+    /// <returns>True when the object was placed in a cell and activated. False, with nothing changed, when the object has no
+    /// <see cref="PartArray"/> (retail's <c>enter_cell</c> puts no such object in a cell: it would be in none) or when the
+    /// position's cell does not exist or is not loaded (an outdoor cell whose landblock the sweep's cells do not hold, an indoor
+    /// cell not loaded, an invalid cell id): the object stays where it was, out of the world if it was. False when the object
+    /// has a parent (the position is stored, as retail, and the object stays attached) or the placement failed
+    /// (<see cref="SetPositionError"/> other than Ok).</returns>
     /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
     /// <exception cref="ArgumentException">The position is outside that domain; state unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::enter_world(Position*) (acclient.c:323440) -> enter_world(slide) (acclient.c:323345)
     public bool EnterWorld(in Position p)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
+        // non-retail: without a part array retail "enters" no cell and answers true; a client is told instead
         // non-retail: retail stores the position and sends the object to the lost cell; a client is told instead
-        if (!World.Sweep.FindsCell(this, p))
+        if (_partArray is null || !World.Sweep.FindsCell(this, p))
         {
             return false;
         }
@@ -206,9 +225,11 @@ public sealed partial class PhysicsObj
     /// finite contact-plane and sliding normals, of unit length (|n|² within 5 × EPSILON of 1) when flagged valid, and a finite
     /// contact-plane distance.</param>
     /// <exception cref="ArgumentException">The result is outside that domain (state unchanged; retail stores it).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
     public void CommitTransition(in TransitionResult t)
     {
+        ThrowIfRemoved();
         // non-retail: a client sweep's result is checked before anything changes
         InputLimits.ThrowIfOutside(t.CurrentPosition, nameof(t));
         if (!InputLimits.IsNormalInDomain(t.ContactPlaneNormal, t.ContactPlaneValid)
@@ -281,7 +302,7 @@ public sealed partial class PhysicsObj
 
         if ((_transientState & TransientState.Contact) != 0)
         {
-            SetOnWalkable(!(ContactPlaneNormal.Z < PhysicsGlobals.FloorZ));
+            SetOnWalkableInternal(!(ContactPlaneNormal.Z < PhysicsGlobals.FloorZ));
         }
         else
         {
@@ -328,9 +349,11 @@ public sealed partial class PhysicsObj
     /// <param name="p">The position: the domain of <see cref="StorePosition"/>.</param>
     /// <exception cref="ArgumentException">The position is outside that domain; checked before the object leaves its cell
     /// (state unchanged).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: the lost-cell branch of CPhysicsObj::SetPositionInternal (acclient.c:322503, 323034)
     public void GoToLostCell(in Position p)
     {
+        ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         GoToLostCellInternal(p);
     }

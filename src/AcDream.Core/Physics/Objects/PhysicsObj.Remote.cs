@@ -12,7 +12,7 @@ public sealed partial class PhysicsObj
     /// <c>SmartBox::HandleReceivedPosition</c>): a report whose position timestamp is not newer is dropped; one whose teleport
     /// timestamp is older is dropped and the position stamp restored; otherwise <see cref="MoveOrTeleport"/> runs and, when it
     /// used the report, the constraint is re-armed at the object's current position with
-    /// <see cref="GetStartConstraintDistance"/> / <see cref="GetMaxConstraintDistance"/> (the dead-reckoning leash).
+    /// <see cref="StartConstraintDistance"/> / <see cref="MaxConstraintDistance"/> (the dead-reckoning leash).
     /// </summary>
     /// <remarks><para>SmartBox's parent and placement-frame handling (unset_parent, SetPlacementFrame) and its error counter are
     /// the client's concern and not ported here.</para>
@@ -38,9 +38,11 @@ public sealed partial class PhysicsObj
     /// world (cell 0), as retail does. The leash is re-armed for the last four.</returns>
     /// <exception cref="ArgumentException"><paramref name="p"/> is outside the position domain of <see cref="StorePosition"/>
     /// (invalid rotation; origin not finite, beyond ±65,536 m, or outdoor x, y outside [−192, 384]); nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: SmartBox::HandleReceivedPosition (acclient.c:145124)
     public ReceivedPositionResult HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)
     {
+        ThrowIfRemoved();
         if (!ManagerMath.IsUsable(p))
         {
             throw new ArgumentException("Position must have a finite origin and a valid rotation.", nameof(p));
@@ -73,7 +75,7 @@ public sealed partial class PhysicsObj
         // ±65,536 m) skips the re-arm instead of refusing after the move
         if (InputLimits.IsPositionInDomain(_position))
         {
-            ConstrainTo(_position, (float)GetStartConstraintDistance(), (float)GetMaxConstraintDistance());
+            ConstrainTo(_position, (float)StartConstraintDistance, (float)MaxConstraintDistance);
         }
 
         return result;
@@ -82,9 +84,11 @@ public sealed partial class PhysicsObj
     /// <summary>Passes a target-tracking report (context 0 only) to the position manager.</summary>
     /// <param name="info">The report.</param>
     /// <remarks>Retail also forwards it to the movement manager, whose seam here has no such entry.</remarks>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::HandleUpdateTarget (acclient.c:319966)
     public void HandleUpdateTarget(in TargetInfo info)
     {
+        ThrowIfRemoved();
         Touch();
         if (info.ContextId != 0)
         {
@@ -100,9 +104,11 @@ public sealed partial class PhysicsObj
     /// then nothing else happens.
     /// </summary>
     /// <param name="objectId">Target id: any value (an id the world does not hold sticks to nothing).</param>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::stick_to_object (acclient.c:319724)
     public void StickToObject(uint objectId)
     {
+        ThrowIfRemoved();
         PositionManager pm = MakePositionManager();
         PhysicsObj? found = World.GetObjectById(objectId);
         if (found is null)
@@ -111,8 +117,8 @@ public sealed partial class PhysicsObj
         }
 
         PhysicsObj target = found.Parent ?? found;
-        float height = (float)target.GetHeight();
-        float radius = (float)target.GetRadius();
+        float height = target.Height;
+        float radius = target.Radius;
         pm.StickTo(target.Id, radius, height);
     }
 }

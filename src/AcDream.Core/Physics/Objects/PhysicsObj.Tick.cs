@@ -41,7 +41,7 @@ public sealed partial class PhysicsObj
             }
             else
             {
-                SetActive(true);
+                SetActiveInternal(true);
             }
         }
 
@@ -82,7 +82,7 @@ public sealed partial class PhysicsObj
 
             if ((_transientState & TransientState.CheckEthereal) != 0)
             {
-                SetEthereal(false);
+                SetEtherealInternal(false);
             }
 
             JumpedThisFrame = false;
@@ -183,6 +183,13 @@ public sealed partial class PhysicsObj
                 newPos.Frame.Origin = _position.Frame.Origin;
                 StoreStepFrame(ref newPos.Frame);
                 CachedVelocity = Vector3.Zero;
+            }
+
+            // non-retail: a collision listener removed the object from its world: its step ends here (its managers would act
+            // on an object that refuses every mutator). The commit's shadow update tests only CellId for it.
+            if (RemovedFromWorld)
+            {
+                return;
             }
 
             SceneEffects fx = World.Effects;

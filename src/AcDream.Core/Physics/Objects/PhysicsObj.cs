@@ -38,8 +38,11 @@ namespace AcDream.Core.Physics.Objects;
 /// retail).</item>
 /// </list>
 /// <para>Optional managers are null when absent and cost nothing. As in retail, an object enters a cell only when it has a
-/// part array (<c>CPhysicsObj::enter_cell</c>, acclient.c:318201), and update_object does nothing for an object with no cell:
-/// give every simulated object an <see cref="IPartArray"/> (e.g. <see cref="SimplePartArray"/>).</para>
+/// part array (<c>CPhysicsObj::enter_cell</c>, acclient.c:318201; <see cref="EnterWorld"/> returns false without one), and
+/// update_object does nothing for an object with no cell: give every simulated object an <see cref="IPartArray"/> (e.g.
+/// <see cref="SimplePartArray"/>).</para>
+/// <para>An object removed from its world (<see cref="PhysicsWorld.RemoveObject"/>) is in no cell, has no transient state
+/// and refuses every public mutator (<see cref="InvalidOperationException"/>); its reads stay allowed.</para>
 /// </remarks>
 public sealed partial class PhysicsObj
 {
@@ -141,11 +144,13 @@ public sealed partial class PhysicsObj
 
     /// <summary>Friction coefficient in [0, 1] (retail <c>friction</c>, default 0.95): on walkable ground speed decays as (1 - f)^dt.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is NaN or outside [0, 1] (outside, retail's pow would yield NaN or growth).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public float Friction
     {
         get => _friction;
         set
         {
+            ThrowIfRemoved();
             if (!(value >= 0f && value <= 1f))
             {
                 throw new ArgumentOutOfRangeException(nameof(value), "Friction must be in [0, 1].");
@@ -157,11 +162,13 @@ public sealed partial class PhysicsObj
 
     /// <summary>Elasticity (retail <c>elasticity</c>, default 0.05), used by the collision response.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public float Elasticity
     {
         get => _elasticity;
         set
         {
+            ThrowIfRemoved();
             if (!float.IsFinite(value))
             {
                 throw new ArgumentOutOfRangeException(nameof(value), "Elasticity must be finite.");
@@ -182,11 +189,13 @@ public sealed partial class PhysicsObj
 
     /// <summary>Floor of <see cref="Translucency"/> (retail <c>translucencyOriginal</c>).</summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is NaN or infinite.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public float TranslucencyOriginal
     {
         get => _translucencyOriginal;
         set
         {
+            ThrowIfRemoved();
             if (!float.IsFinite(value))
             {
                 throw new ArgumentOutOfRangeException(nameof(value), "Translucency must be finite.");
@@ -212,18 +221,31 @@ public sealed partial class PhysicsObj
     public bool JumpedThisFrame { get; private set; }
 
     /// <summary>Whether the last move was autonomous (retail <c>last_move_was_autonomous</c>).</summary>
-    public bool LastMoveWasAutonomous { get; set; }
+    /// <exception cref="InvalidOperationException">Set on an object removed from its world.</exception>
+    public bool LastMoveWasAutonomous
+    {
+        get => _lastMoveWasAutonomous;
+        set
+        {
+            ThrowIfRemoved();
+            _lastMoveWasAutonomous = value;
+        }
+    }
+
+    private bool _lastMoveWasAutonomous;
 
     /// <summary>The part array and animation seam, or null (retail <c>part_array</c>).</summary>
     /// <remarks>A <see cref="SimplePartArray"/> belongs to one object at a time; it is released when its object takes another
     /// part array (or null).</remarks>
     /// <exception cref="ArgumentException">The value is a <see cref="SimplePartArray"/> that belongs to another object; nothing
     /// changes.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IPartArray? PartArray
     {
         get => _partArray;
         set
         {
+            ThrowIfRemoved();
             // non-retail: retail's part arrays are made per object; a shared one would record two objects' frames and cells
             if (value is SimplePartArray { Owner: not null } taken && taken.Owner != this)
             {
@@ -249,11 +271,13 @@ public sealed partial class PhysicsObj
     /// or a client's own <see cref="IMovementManager"/>. Null until <see cref="MakeMovementManager"/> or
     /// <see cref="GetOrCreateMotionInterpreter"/> creates it; an object without one deactivates itself when it rests on
     /// walkable ground.</summary>
+    /// <exception cref="System.InvalidOperationException">Set on an object removed from its world.</exception>
     public IMovementManager? Movement
     {
         get => _movementManager;
         set
         {
+            ThrowIfRemoved();
             Touch();
             _movementManager = value;
         }
@@ -273,44 +297,52 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Detection manager seam, or null.</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IDetectionManager? DetectionManager
     {
         get => _rare?.DetectionManager;
         set
         {
+            ThrowIfRemoved();
             Touch();
             Rare(value is not null)?.DetectionManager = value;
         }
     }
 
     /// <summary>Target manager seam, or null.</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public ITargetManager? TargetManager
     {
         get => _rare?.TargetManager;
         set
         {
+            ThrowIfRemoved();
             Touch();
             Rare(value is not null)?.TargetManager = value;
         }
     }
 
     /// <summary>Particle manager seam, or null (runs for inactive objects too).</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IParticleManager? ParticleManager
     {
         get => _rare?.ParticleManager;
         set
         {
+            ThrowIfRemoved();
             Touch();
             Rare(value is not null)?.ParticleManager = value;
         }
     }
 
     /// <summary>Script manager seam, or null (runs for inactive objects too).</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IScriptManager? ScriptManager
     {
         get => _rare?.ScriptManager;
         set
         {
+            ThrowIfRemoved();
             Touch();
             Rare(value is not null)?.ScriptManager = value;
         }
@@ -318,8 +350,10 @@ public sealed partial class PhysicsObj
 
     /// <summary>Sets the persistent state bits (retail <c>set_state</c>, acclient.c:322171, without the lighting and
     /// no-draw side effects, which belong to the renderer).</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public void SetState(PhysicsState newState)
     {
+        ThrowIfRemoved();
         Touch();
         _state = newState;
     }
@@ -329,8 +363,10 @@ public sealed partial class PhysicsObj
     /// (1,000 m/s²).</param>
     /// <exception cref="ArgumentException">A component is NaN or infinite, or the magnitude exceeds 1,000 m/s² (state
     /// unchanged).</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public void SetAcceleration(Vector3 acceleration)
     {
+        ThrowIfRemoved();
         ThrowIfNotFinite(acceleration, nameof(acceleration));
         // non-retail: the acceleration's bound (1e30 m/s² swept an object 1e28 m in one step)
         if ((double)acceleration.X * acceleration.X + (double)acceleration.Y * acceleration.Y
@@ -362,6 +398,29 @@ public sealed partial class PhysicsObj
         public PhysicsObj? Parent;
         public ChildList? Children;
         public PositionManager? PositionManager;
+    }
+
+    // non-retail: an object removed from its world refuses every public mutator (retail deletes the object; here the client
+    // keeps a reference that could otherwise be changed, placed and reported in a cell while no tick ever visits it)
+    private void ThrowIfRemoved()
+    {
+        if (RemovedFromWorld)
+        {
+            ThrowRemoved();
+        }
+    }
+
+    [System.Diagnostics.CodeAnalysis.DoesNotReturn]
+    private void ThrowRemoved() =>
+        throw new InvalidOperationException(string.Create(System.Globalization.CultureInfo.InvariantCulture,
+            $"Object 0x{Id:X8} was removed from its world: it can be read but not changed (create a new object)."));
+
+    /// <summary>Takes an object being removed from its world out of its cell and clears its transient state (contact, walkable,
+    /// active...), so that it reports what it is: in no cell, not simulated. Its position stays readable.</summary>
+    internal void ClearOnRemove()
+    {
+        CellId = 0;
+        _transientState = 0;
     }
 
     private static void ThrowIfNotFinite(Vector3 v, string name)

@@ -19,24 +19,34 @@ public partial struct Frame
     /// <summary>
     /// Heading of the local +Y (forward) axis in degrees clockwise from north, in [0, 360):
     /// <c>fmod(450 - atan2(fy, fx) in degrees, 360)</c>. North (+Y, the identity frame) is 0, east (+X) is 90.
+    /// Retail <c>Frame::get_heading</c>, which returns the x87 double kept here.
     /// </summary>
     // retail: Frame::get_heading (acclient.c:357409)
-    public readonly double GetHeading()
+    public readonly double Heading
     {
-        double x = ((double)_m31 + _m11) * 0.0 + _m21;
-        double y = ((double)_m32 + _m12) * 0.0 + _m22;
-        return HeadingMath.CompassFromAtan2(Math.Atan2(y, x));
+        get
+        {
+            double x = ((double)_m31 + _m11) * 0.0 + _m21;
+            double y = ((double)_m32 + _m12) * 0.0 + _m22;
+            return HeadingMath.CompassFromAtan2(Math.Atan2(y, x));
+        }
     }
 
     /// <summary>
     /// Turns the frame to face <paramref name="degrees"/> (clockwise from north) while keeping its current pitch:
     /// the forward vector becomes (sin h, cos h, current forward z) and <see cref="SetVectorHeading"/> rebuilds the rotation.
     /// </summary>
+    /// <param name="degrees">Compass heading, degrees (the type of <see cref="Heading"/>); rounded to float first, as retail's
+    /// <c>Frame::set_heading(float)</c> takes it, so a heading read with <see cref="Heading"/> and set back turns the frame by
+    /// less than a float ulp of the angle.</param>
+    /// <remarks>A method, not a setter of <see cref="Heading"/>: it rebuilds the rotation (no roll, the current pitch), so
+    /// the heading read back is the wrapped, float-rounded value, not the one given.</remarks>
     // retail: Frame::set_heading (acclient.c:357691)
-    public void SetHeading(float degrees)
+    public void SetHeading(double degrees)
     {
+        float heading = (float)degrees;
         float dz = (float)(((double)_m33 + _m13) * 0.0 + _m23);
-        double rad = degrees * HeadingMath.DegToRad;
+        double rad = heading * HeadingMath.DegToRad;
         (double sin, double cos) = Math.SinCos(rad); // the same bits as Sin and Cos (SinCosEquivalenceTests)
         var direction = new Vector3((float)sin, (float)cos, dz);
         SetVectorHeading(direction);

@@ -76,15 +76,18 @@ public partial struct Frame : IEquatable<Frame>
     }
 
     /// <summary>Creates a frame at <paramref name="origin"/> facing <paramref name="headingDegrees"/> (clockwise from north).</summary>
-    /// <exception cref="ArgumentException">The origin or heading is NaN or infinite.</exception>
-    public static Frame FromHeading(Vector3 origin, float headingDegrees)
+    /// <param name="origin">The origin: finite.</param>
+    /// <param name="headingDegrees">Compass heading, degrees (rounded to float, as <see cref="SetHeading"/>).</param>
+    /// <exception cref="ArgumentException">The origin or heading is NaN or infinite (the heading also when its float rounding
+    /// is).</exception>
+    public static Frame FromHeading(Vector3 origin, double headingDegrees)
     {
         if (!VectorMath.IsFinite(origin))
         {
             throw new ArgumentException("Frame origin must be finite.", nameof(origin));
         }
 
-        if (!float.IsFinite(headingDegrees))
+        if (!float.IsFinite((float)headingDegrees))
         {
             throw new ArgumentException("Heading must be finite.", nameof(headingDegrees));
         }

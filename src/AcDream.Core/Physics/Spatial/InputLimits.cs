@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Collision.Primitives;
 
 namespace AcDream.Core.Physics.Spatial;
 
@@ -56,6 +57,72 @@ public static class InputLimits
     /// <summary>Longest sweep accepted, metres: one landblock, 192 m (at most 384 transition steps of a 0.5 m sphere). The
     /// engine's own steps move at most 30 m (<see cref="MaxAcceleration"/>).</summary>
     public const float MaxSweepDistance = LandDefs.BlockLength;
+
+    /// <summary>
+    /// Largest reach of a collision shape from its object's origin, metres (object-local, unscaled): 192 m, one landblock.
+    /// A sphere needs |centre| + radius &lt;= 192, a cylinder sphere |low point| + radius + height &lt;= 192 (radius and height
+    /// positive). The sweep pushes an object out of what its shapes overlap by up to their scaled reach: a 1e7 m sphere
+    /// resting on the ground lifts its object 1e7 m in one step, beyond <see cref="MaxCoordinate"/>, and every later sweep
+    /// refuses the position (every Tick throws). At this bound and <see cref="MaxScale"/> the push is at most 100 × 192 =
+    /// 19,200 m, which keeps any origin above terrain within ±65,536 m. The largest retail setups reach a few metres.
+    /// </summary>
+    public const float MaxShapeReach = LandDefs.BlockLength;
+
+    /// <summary>Largest step-up or step-down height, metres (object-local, unscaled): 192 m, one landblock; step heights are
+    /// in [0, 192] (retail's are 0.01 m to a few metres). At <see cref="MaxScale"/> a step-down probe then moves at most
+    /// 19,200 m, within <see cref="MaxCoordinate"/>.</summary>
+    public const float MaxStepHeight = LandDefs.BlockLength;
+
+    /// <summary>True when <paramref name="s"/> is a sphere the sweep can handle: finite centre, positive radius and
+    /// |centre| + radius &lt;= <see cref="MaxShapeReach"/> (computed in double).</summary>
+    internal static bool IsSphereInDomain(in Sphere s) =>
+        IsFinite(s.Center) && s.Radius > 0f && Length(s.Center) + s.Radius <= MaxShapeReach; // also NaN and ∞ radii
+
+    /// <summary>True when <paramref name="c"/> is a cylinder sphere the sweep can handle: finite low point, positive radius
+    /// and height, |low point| + radius + height &lt;= <see cref="MaxShapeReach"/> (computed in double).</summary>
+    internal static bool IsCylinderInDomain(in CylSphere c) =>
+        IsFinite(c.LowPt) && c.Radius > 0f && c.Height > 0f
+        && Length(c.LowPt) + c.Radius + (double)c.Height <= MaxShapeReach; // also NaN and ∞ sizes
+
+    /// <summary>True when <paramref name="h"/> is a step height in [0, <see cref="MaxStepHeight"/>].</summary>
+    internal static bool IsStepHeightInDomain(float h) => h >= 0f && h <= MaxStepHeight;
+
+    /// <summary>Throws when a sphere of <paramref name="spheres"/> is outside <see cref="IsSphereInDomain"/>.</summary>
+    /// <exception cref="ArgumentException">A sphere is outside the domain (the message names its index).</exception>
+    internal static void ThrowIfOutside(ReadOnlySpan<Sphere> spheres, string paramName)
+    {
+        for (int i = 0; i < spheres.Length; i++)
+        {
+            if (!IsSphereInDomain(spheres[i]))
+            {
+                throw new ArgumentException(string.Create(System.Globalization.CultureInfo.InvariantCulture,
+                    $"Sphere {i} needs a finite centre and a positive radius with |centre| + radius at most 192 m (InputLimits.MaxShapeReach)."),
+                    paramName);
+            }
+        }
+    }
+
+    /// <summary>Throws when a cylinder sphere of <paramref name="cylSpheres"/> is outside <see cref="IsCylinderInDomain"/>.</summary>
+    /// <exception cref="ArgumentException">A cylinder sphere is outside the domain (the message names its index).</exception>
+    internal static void ThrowIfOutside(ReadOnlySpan<CylSphere> cylSpheres, string paramName)
+    {
+        for (int i = 0; i < cylSpheres.Length; i++)
+        {
+            if (!IsCylinderInDomain(cylSpheres[i]))
+            {
+                throw new ArgumentException(string.Create(System.Globalization.CultureInfo.InvariantCulture,
+                    $"Cylinder sphere {i} needs a finite low point, a positive radius and height, and |low point| + radius + height at most 192 m (InputLimits.MaxShapeReach)."),
+                    paramName);
+            }
+        }
+    }
+
+    /// <summary>Throws when <paramref name="h"/> is outside [0, <see cref="MaxStepHeight"/>].</summary>
+    /// <exception cref="ArgumentException">The step height is NaN, negative or above 192 m.</exception>
+    internal static float ThrowIfStepHeightOutside(float h, string paramName) =>
+        IsStepHeightInDomain(h) ? h : throw new ArgumentException("Step heights must be in [0, 192] m (InputLimits.MaxStepHeight).", paramName);
+
+    private static double Length(Vector3 v) => Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
 
     /// <summary>True when <paramref name="cellId"/>'s low word is an outdoor cell (1..0x40) or the landblock (0xFFFF): the
     /// ids <c>store_position</c> re-homes to the outdoor cell under the origin.</summary>

@@ -78,8 +78,9 @@ public struct Position : IEquatable<Position>
     }
 
     /// <summary>Compass heading (degrees clockwise from north) from this position to <paramref name="p"/>; 0 when they coincide in x, y.</summary>
+    /// <remarks>Retail <c>Position::heading</c>.</remarks>
     // retail: Position::heading (acclient.c:467050)
-    public readonly double Heading(in Position p)
+    public readonly double HeadingTo(in Position p)
     {
         Vector3 d = GetOffset(p);
         d.Z = 0f;
@@ -91,8 +92,9 @@ public struct Position : IEquatable<Position>
         return HeadingMath.CompassFromAtan2(Math.Atan2(d.Y, d.X));
     }
 
-    /// <summary>The compass heading this position's frame faces.</summary>
-    public readonly double GetHeading() => Frame.GetHeading();
+    /// <summary>The compass heading this position's frame faces, degrees clockwise from north in [0, 360)
+    /// (<see cref="Frame.Heading"/>; retail <c>Frame::get_heading</c> of <c>frame</c>).</summary>
+    public readonly double Heading => Frame.Heading;
 
     /// <summary>The point <paramref name="v"/> local to <paramref name="p"/>'s frame, expressed in this position's local frame.</summary>
     // retail: Position::localtolocal (acclient.c:143794)

@@ -23,6 +23,9 @@ public sealed partial class PhysicsWorld
         return ref _stepScratch[_stepScratchDepth++];
     }
 
+    /// <summary>Number of swept steps in progress (0 between ticks).</summary>
+    internal int StepScratchDepth => _stepScratchDepth;
+
     /// <summary>Ends the step that took the innermost scratch result.</summary>
     internal void LeaveStepScratch() => _stepScratchDepth--;
 }

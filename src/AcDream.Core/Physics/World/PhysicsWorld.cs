@@ -175,14 +175,29 @@ public sealed partial class PhysicsWorld
     /// <summary>The object table, in visiting order.</summary>
     internal VisitOrderList Objects => _objects;
 
-    /// <summary>The object with id <paramref name="id"/> (the first created with that id), or null
-    /// (retail <c>CPhysicsObj::GetObjectA</c> through the object maintainer's table, acclient.c:316437).</summary>
+    /// <summary>The object with id <paramref name="id"/>, or null when no object of this world has it (id 0 is no id: always
+    /// null) (retail <c>CPhysicsObj::GetObjectA</c> through the object maintainer's table, acclient.c:316437).</summary>
     public PhysicsObj? GetObjectById(uint id) => id != 0 && _byId.TryGetValue(id, out PhysicsObj? o) ? o : null;
 
     /// <summary>Creates an object owned by this world (retail: <c>CPhysicsObj</c> constructor plus registration in the object
     /// table). It is not in a cell until placed (<see cref="PhysicsObj.EnterWorld"/> or <see cref="PhysicsObj.SetPositionSimple"/>).</summary>
+    /// <param name="id">The object's id; 0 for none (any number of objects may have no id). A non-zero id is unique in the world
+    /// while its object is in it: the id of a removed object is free again.</param>
+    /// <returns>The new object.</returns>
+    /// <exception cref="ArgumentException"><paramref name="id"/> is not 0 and an object of this world already has it (a server
+    /// re-sending an object's creation: look it up with <see cref="GetObjectById"/>, or remove the old one first); nothing
+    /// changes.</exception>
     public PhysicsObj CreateObject(uint id = 0)
     {
+        // non-retail: a second object with an id in use is refused (retail's object table would hold two and answer either)
+        if (id != 0 && _byId.ContainsKey(id))
+        {
+            throw new ArgumentException(
+                string.Create(System.Globalization.CultureInfo.InvariantCulture,
+                    $"An object with id 0x{id:X8} is already in this world: look it up with GetObjectById, or remove it first."),
+                nameof(id));
+        }
+
         // Kept in ascending id order (equal ids: creation order) so that a tick visits objects in the same order whatever the
         // order of creation. Retail walks its hash table; any fixed order is as retail-like as another. O(log n) in any order.
         var obj = new PhysicsObj(this, id, _created++);
@@ -191,7 +206,7 @@ public sealed partial class PhysicsWorld
         obj.Touch();
         if (id != 0)
         {
-            _byId.TryAdd(id, obj);
+            _byId.Add(id, obj);
         }
 
         return obj;
@@ -201,9 +216,11 @@ public sealed partial class PhysicsWorld
     /// <remarks>Safe from any callback inside a tick (hooks, the step observer, collision and player listeners), the removed
     /// object's own included: its step ends at the callback, its shadows leave the cells and never return, its hooks are
     /// dropped (pooled fades go back to the pool once), and every other object is still visited exactly once this tick. The
-    /// removed object keeps its last <see cref="PhysicsObj.Position"/> and <see cref="PhysicsObj.CellId"/> for the caller to
-    /// read; it cannot be added back.</remarks>
-    /// <exception cref="ArgumentException">The object is not in this world.</exception>
+    /// removed object keeps its last <see cref="PhysicsObj.Position"/> for the caller to read, but is in no cell
+    /// (<see cref="PhysicsObj.CellId"/> 0) and has no transient state (no contact, walkable or active bit); its id is free for a
+    /// new object. It cannot be added back: every public mutator of a removed object (placement, velocity, parent, state,
+    /// hooks, managers...) throws <see cref="InvalidOperationException"/>; its reads stay allowed.</remarks>
+    /// <exception cref="ArgumentException">The object is not in this world (or was already removed).</exception>
     public void RemoveObject(PhysicsObj obj)
     {
         ArgumentNullException.ThrowIfNull(obj);
@@ -227,6 +244,7 @@ public sealed partial class PhysicsWorld
         }
 
         obj.RemoveShadowsFromCells();
+        obj.ClearOnRemove();
         obj.ClearHooksOnRemove();
         if (_player == obj)
         {
@@ -261,10 +279,17 @@ public sealed partial class PhysicsWorld
     /// <param name="now">Client time, seconds: finite, |now| &lt; <see cref="InputLimits.MaxClockTime"/> = 2^40 s
     /// (1,099,511,627,776 s, about 34,800 years); beyond it the double clock's spacing (2^-12 s and more) no longer resolves
     /// EPSILON, and from about 1e15 s not even the 1/30 s gate.</param>
-    /// <returns>True when the objects were updated (at least MinQuantum had passed).</returns>
+    /// <returns>True when the objects were visited (at least MinQuantum had passed). A frame longer than
+    /// <see cref="PhysicsProfile.HugeQuantum"/> (2 s) is visited but discarded: no object moves. Such frames, and a clock
+    /// going back, are counted in <see cref="DiscardedFrames"/> — a count growing every frame means the clock is not in
+    /// seconds (is it in milliseconds?).</returns>
     /// <exception cref="ArgumentException"><paramref name="now"/> is NaN, infinite or not within ±2^40 s (state unchanged).</exception>
     /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick (re-entrant tick); nothing
     /// changes and the tick in progress goes on.</exception>
+    /// <remarks>An exception thrown by a client callback (collision or player listener, step observer, hooks, seams) propagates
+    /// out of the tick uncaught. The world stays usable: the next tick runs, the pools are full again, and the objects the
+    /// throwing tick did not reach are updated by the next one over the whole elapsed time (docs/stability.md, "After a
+    /// callback threw").</remarks>
     public bool Tick(double now)
     {
         SetCurrentTime(now);
@@ -275,8 +300,10 @@ public sealed partial class PhysicsWorld
     /// The world tick: when the client clock went backwards, resynchronises; when at least MinQuantum has passed since the
     /// last update, runs <see cref="PhysicsObj.UpdateObject"/> on every object in order and records the time.
     /// </summary>
-    /// <returns>True when the objects were updated.</returns>
+    /// <returns>True when the objects were visited (at least MinQuantum had passed; a frame longer than
+    /// <see cref="PhysicsProfile.HugeQuantum"/> is visited but discarded, see <see cref="DiscardedFrames"/>).</returns>
     /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick; nothing changes.</exception>
+    /// <remarks>A client callback's exception propagates; the world stays usable (see <see cref="Tick"/>).</remarks>
     // retail: CPhysics::UseTime (acclient.c:311334)
     public bool UseTime()
     {
@@ -284,6 +311,8 @@ public sealed partial class PhysicsWorld
         double quantum = CurrentTime - LastUpdate;
         if (quantum < 0.0)
         {
+            // non-retail: the discarded frame is counted for the client (retail resyncs silently)
+            CountDiscardedFrame(quantum);
             LastUpdate = CurrentTime;
             return false;
         }
@@ -291,6 +320,12 @@ public sealed partial class PhysicsWorld
         if (!(quantum >= Profile.MinQuantum))
         {
             return false;
+        }
+
+        if (quantum > Profile.HugeQuantum)
+        {
+            // non-retail: the frame every object's update_object will discard (acclient.c:323080) is counted for the client
+            CountDiscardedFrame(quantum);
         }
 
         // non-retail: the re-entrancy guard (retail's tick is never called from inside itself)
@@ -328,6 +363,29 @@ public sealed partial class PhysicsWorld
 
         LastUpdate = CurrentTime;
         return true;
+    }
+
+    /// <summary>
+    /// Number of frames this world discarded since its creation: ticks (<see cref="Tick"/>, <see cref="UseTime"/>) whose
+    /// elapsed time since <see cref="LastUpdate"/> was negative (the client clock went back: retail's <c>CPhysics::UseTime</c>
+    /// resyncs <see cref="LastUpdate"/> and runs no update) or above <see cref="PhysicsProfile.HugeQuantum"/> (2 s: the objects
+    /// are visited, but retail's <c>update_object</c> discards a gap that large, sets each object's update time to now and
+    /// runs no step, so nothing moves). A tick shorter than MinQuantum is not discarded (its time accumulates).
+    /// </summary>
+    /// <remarks>A count that grows with every frame means the clock passed to <see cref="Tick"/> is not in seconds (a clock in
+    /// milliseconds makes every 60 fps frame 16.7 "seconds" long) or runs backwards. Counted once per tick in the world's
+    /// update, not per object (an object whose own gap is over 2 s because it was frozen or parented is retail's resync and
+    /// not counted).</remarks>
+    public long DiscardedFrames { get; private set; }
+
+    /// <summary>Length of the last discarded frame (see <see cref="DiscardedFrames"/>), seconds: negative when the clock
+    /// went back, above <see cref="PhysicsProfile.HugeQuantum"/> otherwise; 0 until a frame is discarded.</summary>
+    public double LastDiscardedFrameSeconds { get; private set; }
+
+    private void CountDiscardedFrame(double quantum)
+    {
+        DiscardedFrames++;
+        LastDiscardedFrameSeconds = quantum;
     }
 
     private void ThrowIfInTick()

@@ -61,8 +61,8 @@ public class VelocityBoundTests
         PhysicsObj w = s.Walker;
         w.SetPositionSimple(MisuseScene.At(100f, 10f), true);
         w.StopInterpolating();
-        w.PositionManager!.UnConstrain();
-        w.UnstickFromObject();
+        w.PositionManager!.StopConstraining();
+        w.StopSticking();
         s.WalkerParts.SequenceVelocity = new Vector3(0f, 50f, 0f);
         for (int i = 0; i < 30; i++)
         {

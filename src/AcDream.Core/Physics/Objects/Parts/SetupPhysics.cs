@@ -19,39 +19,27 @@ public sealed class SetupPhysics
     private readonly CylSphere[] _cylSpheres;
 
     /// <summary>Creates a setup's physics fields (object-local, unscaled, metres).</summary>
-    /// <param name="spheres">Collision spheres (retail <c>CSetup::sphere</c>).</param>
-    /// <param name="cylSpheres">Cylinder spheres (retail <c>CSetup::cylsphere</c>).</param>
-    /// <param name="radius">Bounding radius (retail <c>CSetup::radius</c>).</param>
-    /// <param name="height">Height (retail <c>CSetup::height</c>).</param>
-    /// <param name="stepUpHeight">Step-up height (retail <c>CSetup::step_up_height</c>).</param>
-    /// <param name="stepDownHeight">Step-down height (retail <c>CSetup::step_down_height</c>).</param>
-    /// <exception cref="ArgumentException">A value is NaN or infinite, a sphere or cylinder radius or a cylinder height is not
-    /// positive, or a height is negative.</exception>
+    /// <param name="spheres">Collision spheres (retail <c>CSetup::sphere</c>): the domain of
+    /// <see cref="SimplePartArray.SetSpheres"/> (|centre| + radius at most <see cref="InputLimits.MaxShapeReach"/>, 192 m).</param>
+    /// <param name="cylSpheres">Cylinder spheres (retail <c>CSetup::cylsphere</c>): the domain of
+    /// <see cref="SimplePartArray.SetCylSpheres"/> (|low point| + radius + height at most 192 m).</param>
+    /// <param name="radius">Bounding radius (retail <c>CSetup::radius</c>): finite, not negative.</param>
+    /// <param name="height">Height (retail <c>CSetup::height</c>): finite, not negative.</param>
+    /// <param name="stepUpHeight">Step-up height (retail <c>CSetup::step_up_height</c>): in [0, 192] m
+    /// (<see cref="InputLimits.MaxStepHeight"/>).</param>
+    /// <param name="stepDownHeight">Step-down height (retail <c>CSetup::step_down_height</c>): in [0, 192] m.</param>
+    /// <exception cref="ArgumentException">A value is outside its domain: NaN or infinite, a sphere or cylinder radius or a
+    /// cylinder height not positive, a shape reaching beyond 192 m, a size negative or a step height above 192 m.</exception>
     public SetupPhysics(ReadOnlySpan<Sphere> spheres, ReadOnlySpan<CylSphere> cylSpheres, float radius, float height,
         float stepUpHeight, float stepDownHeight)
     {
-        for (int i = 0; i < spheres.Length; i++)
-        {
-            Sphere s = spheres[i];
-            if (!VectorMath.IsFinite(s.Center) || !float.IsFinite(s.Radius) || !(s.Radius > 0f))
-            {
-                throw new ArgumentException("Spheres need a finite centre and a positive finite radius.", nameof(spheres));
-            }
-        }
-
-        for (int i = 0; i < cylSpheres.Length; i++)
-        {
-            CylSphere c = cylSpheres[i];
-            if (!VectorMath.IsFinite(c.LowPt) || !float.IsFinite(c.Radius) || !float.IsFinite(c.Height) || !(c.Radius > 0f) || !(c.Height > 0f))
-            {
-                throw new ArgumentException("Cylinder spheres need a finite low point and positive finite radius and height.", nameof(cylSpheres));
-            }
-        }
-
+        // non-retail: the shapes' and step heights' domains (see InputLimits.MaxShapeReach, MaxStepHeight)
+        InputLimits.ThrowIfOutside(spheres, nameof(spheres));
+        InputLimits.ThrowIfOutside(cylSpheres, nameof(cylSpheres));
         Check(radius, nameof(radius));
         Check(height, nameof(height));
-        Check(stepUpHeight, nameof(stepUpHeight));
-        Check(stepDownHeight, nameof(stepDownHeight));
+        InputLimits.ThrowIfStepHeightOutside(stepUpHeight, nameof(stepUpHeight));
+        InputLimits.ThrowIfStepHeightOutside(stepDownHeight, nameof(stepDownHeight));
         _spheres = spheres.ToArray();
         _cylSpheres = cylSpheres.ToArray();
         Radius = radius;

@@ -79,17 +79,14 @@ public sealed partial class SimplePartArray : IPartCollision
     }
 
     /// <summary>Replaces the cylinder spheres (a setup's list; object-local, unscaled).</summary>
-    /// <exception cref="ArgumentException">A value is NaN or infinite, or a radius or height is not positive.</exception>
+    /// <param name="cylSpheres">The cylinder spheres: each with a finite low point, a positive radius and height, and
+    /// |low point| + radius + height at most <see cref="InputLimits.MaxShapeReach"/> (192 m).</param>
+    /// <exception cref="ArgumentException">A cylinder sphere is outside that domain (a value NaN or infinite, a radius or
+    /// height not positive, or a reach beyond 192 m; the message names its index); nothing changes.</exception>
     public void SetCylSpheres(ReadOnlySpan<CylSphere> cylSpheres)
     {
-        for (int i = 0; i < cylSpheres.Length; i++)
-        {
-            CylSphere c = cylSpheres[i];
-            if (!VectorMath.IsFinite(c.LowPt) || !float.IsFinite(c.Radius) || !float.IsFinite(c.Height) || !(c.Radius > 0f) || !(c.Height > 0f))
-            {
-                throw new ArgumentException("Cylinder spheres need a finite low point and positive finite radius and height.", nameof(cylSpheres));
-            }
-        }
+        // non-retail: the shapes' domain (see InputLimits.MaxShapeReach)
+        InputLimits.ThrowIfOutside(cylSpheres, nameof(cylSpheres));
 
         _cylSpheres = cylSpheres.ToArray();
         UpdateObstacleReach();

@@ -40,17 +40,14 @@ public sealed partial class SimplePartArray : IPartArray
     public ReadOnlySpan<Sphere> Spheres => _spheres;
 
     /// <summary>Replaces the collision spheres (a setup's sphere list; object-local, unscaled).</summary>
-    /// <exception cref="ArgumentException">A centre or radius is NaN or infinite, or a radius is not positive.</exception>
+    /// <param name="spheres">The spheres: each with a finite centre, a positive radius and |centre| + radius at most
+    /// <see cref="InputLimits.MaxShapeReach"/> (192 m).</param>
+    /// <exception cref="ArgumentException">A sphere is outside that domain (a centre or radius NaN or infinite, a radius not
+    /// positive, or a reach beyond 192 m; the message names its index); nothing changes.</exception>
     public void SetSpheres(ReadOnlySpan<Sphere> spheres)
     {
-        for (int i = 0; i < spheres.Length; i++)
-        {
-            Sphere s = spheres[i];
-            if (!VectorMath.IsFinite(s.Center) || !float.IsFinite(s.Radius) || !(s.Radius > 0f))
-            {
-                throw new ArgumentException("Spheres need a finite centre and a positive finite radius.", nameof(spheres));
-            }
-        }
+        // non-retail: the shapes' domain (a 1e7 m sphere made every later Tick throw)
+        InputLimits.ThrowIfOutside(spheres, nameof(spheres));
 
         Owner?.Touch();
         _spheres = spheres.ToArray();
@@ -76,20 +73,22 @@ public sealed partial class SimplePartArray : IPartArray
         set => _height = Finite(value);
     }
 
-    /// <summary>Step-up height, metres; default 0.01 f, retail's value without a setup (acclient.c:325399).</summary>
-    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <summary>Step-up height, metres, in [0, <see cref="InputLimits.MaxStepHeight"/>] = [0, 192]; default 0.01 f,
+    /// retail's value without a setup (acclient.c:325399).</summary>
+    /// <exception cref="ArgumentException">The value is NaN, negative or above 192 m (state unchanged).</exception>
     public float StepUpHeight
     {
         get => _stepUpHeight;
-        set => _stepUpHeight = Finite(value);
+        set => _stepUpHeight = InputLimits.ThrowIfStepHeightOutside(value, nameof(value));
     }
 
-    /// <summary>Step-down height, metres; default 0.01 f, retail's value without a setup (acclient.c:325413).</summary>
-    /// <exception cref="ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <summary>Step-down height, metres, in [0, <see cref="InputLimits.MaxStepHeight"/>] = [0, 192]; default 0.01 f,
+    /// retail's value without a setup (acclient.c:325413).</summary>
+    /// <exception cref="ArgumentException">The value is NaN, negative or above 192 m (state unchanged).</exception>
     public float StepDownHeight
     {
         get => _stepDownHeight;
-        set => _stepDownHeight = Finite(value);
+        set => _stepDownHeight = InputLimits.ThrowIfStepHeightOutside(value, nameof(value));
     }
 
     private float _radius;
