@@ -24,12 +24,7 @@ public sealed class FirstSceneTests
     private const int By = 0x80;
 
     // Flat landblock 0x8080 at index 10 of the one-metre table: the ground is the plane z = 10.
-    private static TerrainWorld Flat()
-    {
-        TerrainWorld terrain = SyntheticTerrain.Metres();
-        SyntheticTerrain.AddBlock(terrain, Bx, By, (_, _) => 10);
-        return terrain;
-    }
+    private static TerrainWorld Flat() => SyntheticTerrain.FlatBlock(Bx, By, 10);
 
     private static Position Spawn(TerrainWorld terrain) => SyntheticTerrain.OnGround(terrain, SyntheticTerrain.CellId(Bx, By, 4, 4), 100f, 100f);
 

@@ -37,12 +37,8 @@ public sealed class RemovedObjectRefusesMutatorsTests
     // are mutators too.
     private static readonly HashSet<string> MotionMembers = new(StringComparer.Ordinal);
 
-    private static TerrainWorld Flat()
-    {
-        TerrainWorld terrain = SyntheticTerrain.Metres();
-        SyntheticTerrain.AddBlock(terrain, Bx, By, (_, _) => 10);
-        return terrain;
-    }
+    // Flat landblock 0x8080 at index 10 of the one-metre table: the ground is the plane z = 10.
+    private static TerrainWorld Flat() => SyntheticTerrain.FlatBlock(Bx, By, 10);
 
     private static (PhysicsWorld World, PhysicsObj Obj, Position Spawn) Grounded()
     {

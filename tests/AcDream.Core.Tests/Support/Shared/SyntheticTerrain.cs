@@ -24,6 +24,15 @@ internal static class SyntheticTerrain
     /// <summary>A terrain world with the one-metre table.</summary>
     public static TerrainWorld Metres() => new(MetreTable());
 
+    /// <summary>A terrain world with the one-metre table and one flat landblock (bx, by) at height index
+    /// <paramref name="heightIndex"/> (with the one-metre table, the ground is the plane z = heightIndex).</summary>
+    public static TerrainWorld FlatBlock(int bx, int by, int heightIndex)
+    {
+        TerrainWorld terrain = Metres();
+        AddBlock(terrain, bx, by, (_, _) => heightIndex);
+        return terrain;
+    }
+
     /// <summary>Adds landblock (bx, by) whose vertex (vx, vy) has height index <paramref name="height"/>(vx, vy) and terrain type
     /// <paramref name="type"/>(vx, vy) (1 when null: grass-like solid; 16..20 water).</summary>
     public static LandBlock AddBlock(TerrainWorld world, int bx, int by, Func<int, int, int> height, Func<int, int, int>? type = null)
