@@ -13,7 +13,7 @@ public sealed partial class EnvCell
     /// the portal mode stands in for it.
     /// </summary>
     // retail: CEnvCell::find_visible_child_cell (acclient.c:349697), bSearchCells == 0
-    public EnvCell? FindVisibleChildCell(ICellSource cells, Vector3 origin)
+    internal EnvCell? FindVisibleChildCell(ICellSource cells, Vector3 origin)
     {
         ArgumentNullException.ThrowIfNull(cells);
         if (PointInCell(origin))

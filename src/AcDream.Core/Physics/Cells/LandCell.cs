@@ -136,7 +136,7 @@ public sealed partial class LandCell
     /// triangles; <see cref="SurfChar.Solid"/> otherwise.
     /// </summary>
     // retail: CLandCell::walkable_surface_type (acclient.c:355121)
-    public SurfChar WalkableSurfaceType(Polygon walkable, in Position pos)
+    internal SurfChar WalkableSurfaceType(Polygon walkable, in Position pos)
     {
         if (!ReferenceEquals(walkable, _polygon0) && !ReferenceEquals(walkable, _polygon1))
         {

@@ -289,7 +289,7 @@ public sealed partial class PhysicsObj
     /// <summary>Sets or clears ON_WALKABLE, telling the movement manager on a change, then recomputes the acceleration.</summary>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::set_on_walkable (acclient.c:318501)
-    public void SetOnWalkable(bool onWalkable)
+    internal void SetOnWalkable(bool onWalkable)
     {
         ThrowIfRemoved();
         SetOnWalkableInternal(onWalkable);
@@ -328,7 +328,7 @@ public sealed partial class PhysicsObj
     /// <summary>Clears contact, walkable, sliding, water, the stationary bits and ACTIVE (retail <c>clear_transient_states</c>).</summary>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::clear_transient_states (acclient.c:319024)
-    public void ClearTransientStates()
+    internal void ClearTransientStates()
     {
         ThrowIfRemoved();
         Touch();

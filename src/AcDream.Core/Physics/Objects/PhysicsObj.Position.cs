@@ -219,7 +219,7 @@ public sealed partial class PhysicsObj
     /// ON_WALKABLE / SLIDING and acceleration. A result with no cell sends the object to the lost cell. A result carries no
     /// collisions: nothing is reported and the velocity is not bounced (a client sweep reports its own collisions). In a
     /// world that sweeps with a <see cref="RetailSweep"/> the object's shadows then follow it: it is re-shadowed where it
-    /// stands (<see cref="RetailSweep.CalcCrossCells"/>).
+    /// stands (retail <c>CPhysicsObj::calc_cross_cells</c>).
     /// </summary>
     /// <param name="t">The result: <see cref="TransitionResult.CurrentPosition"/> in the domain of <see cref="StorePosition"/>,
     /// finite contact-plane and sliding normals, of unit length (|n|² within 5 × EPSILON of 1) when flagged valid, and a finite

@@ -7,7 +7,7 @@ namespace AcDream.Core.Physics.Spatial;
 public partial struct Frame
 {
     /// <summary>Float32 variant of <see cref="Cache"/>.</summary>
-    public void CacheFloat32()
+    internal void CacheFloat32()
     {
         float b2 = _qx + _qx, c2 = _qy + _qy, d2 = _qz + _qz;
         float wb = _qw * b2, wc = _qw * c2, wd = _qw * d2;
@@ -26,7 +26,7 @@ public partial struct Frame
     }
 
     /// <summary>Float32 variant of <see cref="SetRotate(float, float, float, float)"/> (same restore-on-invalid rule).</summary>
-    public bool SetRotateFloat32(float qw, float qx, float qy, float qz)
+    internal bool SetRotateFloat32(float qw, float qx, float qy, float qz)
     {
         float oldW = _qw, oldX = _qx, oldY = _qy, oldZ = _qz;
         float inv = 1f / System.MathF.Sqrt(qw * qw + qx * qx + qy * qy + qz * qz);
@@ -48,7 +48,7 @@ public partial struct Frame
     }
 
     /// <summary>Float32 variant of <see cref="Combine"/>.</summary>
-    public void CombineFloat32(in Frame f1, in Frame f2)
+    internal void CombineFloat32(in Frame f1, in Frame f2)
     {
         float ox = f1._m31 * f2.Origin.Z + f1._m11 * f2.Origin.X + f1._m21 * f2.Origin.Y + f1.Origin.X;
         float oy = f1._m32 * f2.Origin.Z + f1._m12 * f2.Origin.X + f1._m22 * f2.Origin.Y + f1.Origin.Y;
@@ -62,7 +62,7 @@ public partial struct Frame
     }
 
     /// <summary>Float32 variant of <see cref="GRotate(Vector3)"/>.</summary>
-    public void GRotateFloat32(Vector3 w)
+    internal void GRotateFloat32(Vector3 w)
     {
         float mag2 = w.X * w.X + w.Y * w.Y + w.Z * w.Z;
         if (mag2 < PhysicsGlobals.Epsilon * PhysicsGlobals.Epsilon)
@@ -86,13 +86,13 @@ public partial struct Frame
     }
 
     /// <summary>Float32 variant of <see cref="LocalToGlobal"/>.</summary>
-    public readonly Vector3 LocalToGlobalFloat32(Vector3 p) => new(
+    internal readonly Vector3 LocalToGlobalFloat32(Vector3 p) => new(
         _m31 * p.Z + _m11 * p.X + _m21 * p.Y + Origin.X,
         _m32 * p.Z + _m12 * p.X + _m22 * p.Y + Origin.Y,
         _m33 * p.Z + _m13 * p.X + _m23 * p.Y + Origin.Z);
 
     /// <summary>Float32 variant of <see cref="LocalToGlobalVec"/>.</summary>
-    public readonly Vector3 LocalToGlobalVecFloat32(Vector3 v) => new(
+    internal readonly Vector3 LocalToGlobalVecFloat32(Vector3 v) => new(
         _m31 * v.Z + _m11 * v.X + _m21 * v.Y,
         _m32 * v.Z + _m12 * v.X + _m22 * v.Y,
         _m33 * v.Z + _m13 * v.X + _m23 * v.Y);

@@ -12,7 +12,7 @@ public partial struct Frame
     /// <see cref="Combine"/> without renormalising: origin = f1.localtoglobal(f2.origin), q = f1.q * f2.q stored unnormalised
     /// (double intermediates as retail's combine). Not retail.
     /// </summary>
-    public void CombineNoRenormalise(in Frame f1, in Frame f2)
+    internal void CombineNoRenormalise(in Frame f1, in Frame f2)
     {
         CombineProduct(f1, f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz);
         Origin = origin;
@@ -23,7 +23,7 @@ public partial struct Frame
     /// <see cref="GRotate(Vector3)"/> without renormalising: the same rotation by the global vector <paramref name="w"/> (|w| radians),
     /// with the product stored unnormalised. Not retail.
     /// </summary>
-    public void GRotateNoRenormalise(Vector3 w)
+    internal void GRotateNoRenormalise(Vector3 w)
     {
         if (AxisAngle.TryCreate(w, out AxisAngle r))
         {

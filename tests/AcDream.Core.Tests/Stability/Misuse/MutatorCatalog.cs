@@ -31,7 +31,6 @@ internal static class MutatorCatalog
         ["SimplePartArray.SetFrame(Frame)"] = "engine seam: the object hands its own frame",
         // Sweep entry points are the engine's seam to the collision module (CollisionSweep); SweepObject and SetPosition are
         // called (a client sweep may forward to them), the steps below only with the object's own state.
-        ["RetailSweep.CalcCrossCells(PhysicsObj)"] = "engine seam (CollisionSweep)",
         ["RetailSweep.EtherealCheckForCollisions(PhysicsObj)"] = "engine seam (CollisionSweep)",
         ["RetailSweep.ReportCollisionEnd(PhysicsObj, Boolean)"] = "engine seam (CollisionSweep)",
         // A hook's Execute is the engine's call during process_hooks.

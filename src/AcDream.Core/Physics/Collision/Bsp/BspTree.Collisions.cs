@@ -13,7 +13,7 @@ public sealed partial class BspTree
     /// <summary>Most rounds of <see cref="PlacementInsert"/>. Retail: 20 (acclient.c:360778).</summary>
     public const int MaxPlacementRounds = 20;
 
-    /// <summary>Most iterations of <see cref="AdjustToPlane"/>. Retail: 15 (acclient.c:360915).</summary>
+    /// <summary>Most iterations of the sphere's adjustment back to a hit plane (retail <c>BSPTREE::adjust_to_plane</c>). Retail: 15 (acclient.c:360915).</summary>
     public const int MaxAdjustIterations = 15;
 
     /// <summary>Bisection stops when the time bracket is narrower than this. Retail: 0.02 (acclient.c:360915).</summary>
@@ -212,7 +212,7 @@ public sealed partial class BspTree
     /// <see cref="Polygon.AdjustSphereToPoly"/>, read as "time == 0" (the movement runs along the plane: no touching
     /// time, go straight to the bisection).</remarks>
     // retail: BSPTREE::adjust_to_plane (acclient.c:360915)
-    public bool AdjustToPlane(ref Sphere checkPos, Vector3 currPos, Polygon hitPoly, ref Vector3 contactPoint)
+    internal bool AdjustToPlane(ref Sphere checkPos, Vector3 currPos, Polygon hitPoly, ref Vector3 contactPoint)
     {
         ArgumentNullException.ThrowIfNull(hitPoly);
         double utime = 1.0;

@@ -215,7 +215,7 @@ public sealed partial class Polygon
     /// <remarks>The side test is a flags-only compare in the decompile (C0|C3 on the current distance), read as
     /// "distance ≤ 0": the radius is negated for a centre behind the plane.</remarks>
     // retail: CPolygon::adjust_sphere_to_poly (acclient.c:359497)
-    public double AdjustSphereToPoly(in Sphere checkPos, Vector3 currPos, Vector3 movement)
+    internal double AdjustSphereToPoly(in Sphere checkPos, Vector3 currPos, Vector3 movement)
     {
         float dist = (float)((double)Plane.N.Z * currPos.Z + (double)Plane.N.Y * currPos.Y + currPos.X * (double)Plane.N.X + Plane.D);
         if (!(checkPos.Radius <= Math.Abs(dist)))
@@ -243,7 +243,7 @@ public sealed partial class Polygon
     /// for a solid test, to the radius on the side the centre is on (the far side when the centre is in a solid leaf).
     /// </summary>
     // retail: CPolygon::adjust_to_placement_poly (acclient.c:360136)
-    public void AdjustToPlacementPoly(ref Sphere struckSphere, ref Sphere otherSphere, float radius, bool centerSolid, bool solidCheck)
+    internal void AdjustToPlacementPoly(ref Sphere struckSphere, ref Sphere otherSphere, float radius, bool centerSolid, bool solidCheck)
     {
         double dist = Plane.N.Y * (double)struckSphere.Center.Y + Plane.N.Z * (double)struckSphere.Center.Z + struckSphere.Center.X * (double)Plane.N.X + Plane.D;
         double move;

@@ -34,7 +34,7 @@ public sealed partial class Polygon
     /// in-plane normal <c>cross(N, edge)</c> (pointing into the polygon). False when no edge is crossed.
     /// </summary>
     // retail: CPolygon::find_crossed_edge (acclient.c:360396)
-    public bool FindCrossedEdge(in Sphere sphere, Vector3 up, out Vector3 normal)
+    internal bool FindCrossedEdge(in Sphere sphere, Vector3 up, out Vector3 normal)
     {
         normal = Vector3.Zero;
         if (!DropOntoPlane(sphere.Center, up, out Vector3 dropped))

@@ -172,7 +172,7 @@ public sealed class RetailSweep : CollisionSweep
     /// Re-shadows <paramref name="obj"/> where it stands: in the cells its cylinder spheres overlap, or, without them (or
     /// with a physics BSP), the cells of its sorting sphere (plus its own cell for a BSP object).
     /// </summary>
-    public void CalcCrossCells(PhysicsObj obj)
+    internal void CalcCrossCells(PhysicsObj obj)
     {
         ArgumentNullException.ThrowIfNull(obj);
         obj.CalcCrossCells(this);
