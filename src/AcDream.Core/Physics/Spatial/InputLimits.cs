@@ -76,12 +76,12 @@ public static class InputLimits
     /// <summary>True when <paramref name="s"/> is a sphere the sweep can handle: finite centre, positive radius and
     /// |centre| + radius &lt;= <see cref="MaxShapeReach"/> (computed in double).</summary>
     internal static bool IsSphereInDomain(in Sphere s) =>
-        IsFinite(s.Center) && s.Radius > 0f && Length(s.Center) + s.Radius <= MaxShapeReach; // also NaN and ∞ radii
+        VectorMath.IsFinite(s.Center) && s.Radius > 0f && Length(s.Center) + s.Radius <= MaxShapeReach; // also NaN and ∞ radii
 
     /// <summary>True when <paramref name="c"/> is a cylinder sphere the sweep can handle: finite low point, positive radius
     /// and height, |low point| + radius + height &lt;= <see cref="MaxShapeReach"/> (computed in double).</summary>
     internal static bool IsCylinderInDomain(in CylSphere c) =>
-        IsFinite(c.LowPt) && c.Radius > 0f && c.Height > 0f
+        VectorMath.IsFinite(c.LowPt) && c.Radius > 0f && c.Height > 0f
         && Length(c.LowPt) + c.Radius + (double)c.Height <= MaxShapeReach; // also NaN and ∞ sizes
 
     /// <summary>True when <paramref name="h"/> is a step height in [0, <see cref="MaxStepHeight"/>].</summary>
@@ -122,6 +122,7 @@ public static class InputLimits
     internal static float ThrowIfStepHeightOutside(float h, string paramName) =>
         IsStepHeightInDomain(h) ? h : throw new ArgumentException("Step heights must be in [0, 192] m (InputLimits.MaxStepHeight).", paramName);
 
+    // In double (not VectorMath.Length's float) so that the bound is decided on the exact sum.
     private static double Length(Vector3 v) => Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
 
     /// <summary>True when <paramref name="cellId"/>'s low word is an outdoor cell (1..0x40) or the landblock (0xFFFF): the
@@ -210,7 +211,7 @@ public static class InputLimits
     /// 5 × EPSILON of 1, the tolerance of <see cref="Frame.IsValid"/>).</summary>
     internal static bool IsNormalInDomain(Vector3 n, bool valid)
     {
-        if (!IsFinite(n))
+        if (!VectorMath.IsFinite(n))
         {
             return false;
         }
@@ -219,6 +220,4 @@ public static class InputLimits
         return !valid || Math.Abs(m - 1.0) <= PhysicsGlobals.Epsilon * 5.0;
     }
 
-    /// <summary>True when every component is finite.</summary>
-    internal static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 }
