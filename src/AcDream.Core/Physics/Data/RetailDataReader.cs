@@ -1,0 +1,141 @@
+using System;
+using System.Buffers.Binary;
+using System.Numerics;
+using AcDream.Core.Physics.Spatial;
+
+namespace AcDream.Core.Physics.Data;
+
+/// <summary>
+/// A bounds-checked little-endian cursor over one data-file entry's bytes (after the dat container), the shared reader of
+/// every retail <c>UnPack</c> port. Each read checks the bytes that remain first and throws
+/// <see cref="RetailDataFormatException"/> naming <see cref="Structure"/> and the offset; counts are checked against the
+/// remaining bytes (<see cref="ReadCount"/>) before anything is allocated by them.
+/// </summary>
+/// <remarks>
+/// Retail reads through <c>void **addr</c> with a <c>size</c> it mostly ignores; the port keeps retail's field order and
+/// widths and adds the checks. <see cref="Structure"/> is settable so a nested structure's errors name it.
+/// </remarks>
+internal ref struct RetailDataReader
+{
+    private readonly ReadOnlySpan<byte> _data;
+    private int _offset;
+
+    /// <summary>Reads <paramref name="data"/> from its first byte; errors name <paramref name="structure"/>.</summary>
+    public RetailDataReader(ReadOnlySpan<byte> data, string structure)
+    {
+        _data = data;
+        _offset = 0;
+        Structure = structure;
+    }
+
+    /// <summary>The retail structure being read, named by every error.</summary>
+    public string Structure;
+
+    /// <summary>Bytes read so far.</summary>
+    public readonly int Offset => _offset;
+
+    /// <summary>Bytes not yet read.</summary>
+    public readonly int Remaining => _data.Length - _offset;
+
+    /// <summary>The whole buffer's length.</summary>
+    public readonly int Length => _data.Length;
+
+    /// <summary>A format error at the current offset.</summary>
+    public readonly RetailDataFormatException Error(string reason) => new(Structure, _offset, reason);
+
+    /// <summary>A format error at <paramref name="offset"/>.</summary>
+    public readonly RetailDataFormatException ErrorAt(int offset, string reason) => new(Structure, offset, reason);
+
+    private ReadOnlySpan<byte> Take(int count, string what)
+    {
+        if (count < 0 || count > Remaining)
+            throw Error($"{what} needs {count} bytes, {Remaining} remain");
+        ReadOnlySpan<byte> s = _data.Slice(_offset, count);
+        _offset += count;
+        return s;
+    }
+
+    /// <summary>One byte.</summary>
+    public byte ReadByte(string what = "byte") => Take(1, what)[0];
+
+    /// <summary>A little-endian 16-bit unsigned value.</summary>
+    public ushort ReadUInt16(string what = "uint16") => BinaryPrimitives.ReadUInt16LittleEndian(Take(2, what));
+
+    /// <summary>A little-endian 16-bit signed value.</summary>
+    public short ReadInt16(string what = "int16") => BinaryPrimitives.ReadInt16LittleEndian(Take(2, what));
+
+    /// <summary>A little-endian 32-bit unsigned value.</summary>
+    public uint ReadUInt32(string what = "uint32") => BinaryPrimitives.ReadUInt32LittleEndian(Take(4, what));
+
+    /// <summary>A little-endian 32-bit signed value.</summary>
+    public int ReadInt32(string what = "int32") => BinaryPrimitives.ReadInt32LittleEndian(Take(4, what));
+
+    /// <summary>A little-endian IEEE single, bit for bit (NaN and infinities pass; callers that cannot take them check).</summary>
+    public float ReadSingle(string what = "float") => BitConverter.Int32BitsToSingle(BinaryPrimitives.ReadInt32LittleEndian(Take(4, what)));
+
+    /// <summary>A finite single; a NaN or infinity is a format error.</summary>
+    public float ReadFiniteSingle(string what)
+    {
+        int at = _offset;
+        float v = ReadSingle(what);
+        if (!float.IsFinite(v))
+            throw ErrorAt(at, $"{what} is not finite ({v})");
+        return v;
+    }
+
+    /// <summary>Three singles x, y, z (retail <c>Vector3::UnPack</c> order).</summary>
+    public Vector3 ReadVector3(string what = "vector")
+    {
+        float x = ReadSingle(what), y = ReadSingle(what), z = ReadSingle(what);
+        return new Vector3(x, y, z);
+    }
+
+    /// <summary>Retail <c>AFrame::UnPack</c> (acclient.c:467618): origin x, y, z, then the quaternion w, x, y, z, and retail's
+    /// <c>AFrame::IsValid</c> (acclient.c:467555) on the result: a NaN, or |q|² further than 5 × 0.0002 from 1, is a format
+    /// error. An infinite component is one too (retail's test lets an infinite origin through; the library's
+    /// <see cref="Frame"/> refuses it).</summary>
+    public Frame ReadFrame(string what = "frame")
+    {
+        int at = _offset;
+        Vector3 origin = ReadVector3(what);
+        float w = ReadSingle(what), x = ReadSingle(what), y = ReadSingle(what), z = ReadSingle(what);
+        if (!float.IsFinite(origin.X) || !float.IsFinite(origin.Y) || !float.IsFinite(origin.Z)
+            || !float.IsFinite(w) || !float.IsFinite(x) || !float.IsFinite(y) || !float.IsFinite(z))
+            throw ErrorAt(at, $"{what} is not finite");
+        float norm = z * z + y * y + x * x + w * w;
+        if (0.00019999999 * 5.0 < Math.Abs(norm - 1.0))
+            throw ErrorAt(at, $"{what} rotation is not a unit quaternion (|q|² = {norm})");
+        return new Frame(origin, new Quaternion(x, y, z, w));
+    }
+
+    /// <summary>
+    /// A 32-bit element count, checked before anything is sized by it: each element takes at least
+    /// <paramref name="minBytesEach"/> bytes, so a count whose elements cannot fit in the bytes that remain is a format error.
+    /// </summary>
+    public int ReadCount(string what, int minBytesEach) => CheckCount(ReadUInt32(what), what, minBytesEach);
+
+    /// <summary>A 16-bit element count, checked as <see cref="ReadCount"/> checks.</summary>
+    public int ReadCount16(string what, int minBytesEach) => CheckCount(ReadUInt16(what), what, minBytesEach);
+
+    /// <summary>Checks a count read some other way (for example a byte, or a packed value) against the bytes that remain.</summary>
+    public readonly int CheckCount(uint count, string what, int minBytesEach)
+    {
+        long need = (long)count * Math.Max(minBytesEach, 0);
+        if (count > int.MaxValue || need > Remaining)
+            throw Error($"{what} count {count} needs at least {need} bytes, {Remaining} remain");
+        return (int)count;
+    }
+
+    /// <summary>Skips <paramref name="count"/> bytes (data the physics does not use, consumed exactly).</summary>
+    public void Skip(int count, string what = "skipped bytes") => Take(count, what);
+
+    /// <summary>Skips to the next multiple of four from the start of the entry (retail <c>UNPACK_ALIGN</c> / <c>PACK_ALIGN</c>).</summary>
+    public void Align4()
+    {
+        int pad = (4 - (_offset & 3)) & 3;
+        Take(pad, "alignment padding");
+    }
+
+    /// <summary>The bytes not yet read, without consuming them.</summary>
+    public readonly ReadOnlySpan<byte> Rest => _data.Slice(_offset);
+}
