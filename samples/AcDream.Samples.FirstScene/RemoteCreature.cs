@@ -71,14 +71,14 @@ internal sealed class RemoteCreature
 
     /// <summary>The interpreted motion state the server sends for the walk around the circle (what a client decodes from the
     /// MovementEvent, <see cref="MovementEventDecoder"/>): walk forward at speed 1 (3.12 m/s) and turn left at the speed that
-    /// closes the circle, ω = 3.12 / 8 rad/s over retail's π/2 rad/s at speed 1 (an interpreted left turn is TurnRight at a
+    /// closes the circle, ω = 3.12 / 8 rad/s over the humanoid table's 1.5 rad/s at speed 1 (an interpreted left turn is TurnRight at a
     /// negative speed).</summary>
     private static InterpretedMotionState WalkingTheCircle() => new()
     {
         ForwardCommand = MotionCommand.WalkForward,
         ForwardSpeed = 1f,
         TurnCommand = MotionCommand.TurnRight,
-        TurnSpeed = -(float)(WalkSpeed / Radius / (Math.PI / 2.0)),
+        TurnSpeed = -(float)(WalkSpeed / Radius / RetailSpeedMotionTable.TurnAnimSpeed),
     };
 
     /// <summary>Distance, metres, from the creature to where the server has it at <paramref name="now"/>.</summary>

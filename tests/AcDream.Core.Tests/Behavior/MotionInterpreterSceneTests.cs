@@ -64,7 +64,7 @@ public class MotionInterpreterSceneTests
     }
 
     [Fact]
-    public void Player_Turning_HalfPiPerSecond_TurnsAQuarterInOneSecond()
+    public void Player_Turning_1_5RadPerSecond_Turns85_94DegreesInOneSecond()
     {
         PhysicsWorld world = FlatWorld();
         PhysicsObj player = Creature(world, 1, new PlayerWeenie(), new Vector3(100f, 100f, 20f));
@@ -73,9 +73,9 @@ public class MotionInterpreterSceneTests
         mm.DoMotion(MotionCommand.TurnRight, new MovementParameters());
         SweepScene.Run(world, 1);
         double h0 = player.Position.Frame.Heading;
-        SweepScene.Run(world, 20);   // 1 s at π/2 rad/s clockwise: heading + 90°
+        SweepScene.Run(world, 20);   // 1 s at 1.5 rad/s clockwise: heading + 1.5 × 180/π = 85.943669°
         double turned = player.Position.Frame.Heading - h0;
-        Assert.Equal(90.0, (turned + 360.0) % 360.0, 2);
+        Assert.Equal(1.5 * 180.0 / Math.PI, (turned + 360.0) % 360.0, 2);
     }
 
     [Fact]

@@ -36,6 +36,11 @@ public enum MotionError : uint
     /// <summary>The object teleported: the error a move-to is cancelled with on a teleport (0x3C).</summary>
     ITeleported = 0x3C,
 
+    /// <summary>The motion table has no link, cycle or modifier for the requested motion (0x43). Retail
+    /// <c>WeenieError::NoMtableData</c>, returned by <c>MotionTableManager::PerformMovement</c> (acclient.c:330205) when
+    /// <c>CMotionTable::DoObjectMotion</c> or <c>StopObjectMotion</c> fails.</summary>
+    NoMotionTableData = 0x43,
+
     /// <summary>Six actions are already queued (0x45).</summary>
     TooManyActions = 0x45,
 

@@ -5,7 +5,7 @@ namespace AcDream.Core.Physics.Motion;
 /// <summary>
 /// A motion table for a client without the real ones: the locomotion cycles and modifiers of a humanoid at retail's own
 /// speeds, with no animations (every motion completes at once). Walk forward 3.12 m/s, run forward 4 m/s, side-step
-/// 1.25 m/s and turn π/2 rad/s, each times its speed, so the body moves exactly as fast as the interpreter's
+/// 1.25 m/s and turn 1.5 rad/s, each times its speed, so the body moves exactly as fast as the interpreter's
 /// <see cref="MotionInterp.GetStateVelocity"/> says.
 /// </summary>
 /// <remarks>
@@ -16,13 +16,21 @@ namespace AcDream.Core.Physics.Motion;
 /// modifier, instead of the motion table file's entries; no link animations, so no motion waits for one.</para>
 /// <para>The speeds are those the interpreter itself assumes (<see cref="MotionInterp.WalkAnimSpeed"/>,
 /// <see cref="MotionInterp.RunAnimSpeed"/>, <see cref="MotionInterp.SidestepAnimSpeed"/>); the turn rate
-/// <see cref="TurnAnimSpeed"/> is not in the client code (it is the humanoid motion data's omega).</para>
+/// <see cref="TurnAnimSpeed"/> is not in the client code: retail's omega is <c>speed_mod × MotionData.omega</c>
+/// (<c>add_motion</c> acclient.c:337430, <c>combine_motion</c> 337476), so it is the humanoid motion data's value. The one
+/// reading of the real humanoid table found (table 0x09000001, TurnRight modifier, read by the acdream client's installed-data
+/// test) gives −1.5 rad/s; that is the value used. Retail may also play a TurnRight cycle when turning in place
+/// (<c>CMotionTable::GetObjectSequence</c> 337318, <c>is_allowed</c> 337559); the stand-in keeps turning a modifier.</para>
+/// <para>Errors: a motion the table has no entry for gives <see cref="MotionError.NoMotionTableData"/> (0x43), as retail's
+/// <c>MotionTableManager::PerformMovement</c> returns when <c>DoObjectMotion</c> / <c>StopObjectMotion</c> fail
+/// (acclient.c:330205–330240).</para>
 /// </remarks>
 public sealed class RetailSpeedMotionTable : IMotionTable
 {
-    /// <summary>Turn rate of <see cref="MotionCommand.TurnRight"/> at speed 1, rad/s: π/2 as a float (bits 0x3FC90FDB).
+    /// <summary>Turn rate of <see cref="MotionCommand.TurnRight"/> at speed 1, rad/s: 1.5 (bits 0x3FC00000), the humanoid
+    /// motion table's TurnRight omega as read from the installed data (data-derived, not a client constant).
     /// TurnRight turns clockwise seen from above, so its omega about +Z is negative.</summary>
-    public const float TurnAnimSpeed = 1.5707964f;
+    public const float TurnAnimSpeed = 1.5f;
 
     private const int CompletedCapacity = 32;
     private readonly MotionCommand[] _completed = new MotionCommand[CompletedCapacity];
@@ -79,7 +87,7 @@ public sealed class RetailSpeedMotionTable : IMotionTable
         }
         else if (((uint)motion & (uint)MotionCommandClass.Action) == 0)
         {
-            return MotionError.GeneralMovementFailure;
+            return MotionError.NoMotionTableData;
         }
 
         Recompute();
@@ -105,7 +113,7 @@ public sealed class RetailSpeedMotionTable : IMotionTable
         }
         else
         {
-            return MotionError.GeneralMovementFailure;
+            return MotionError.NoMotionTableData;
         }
 
         Recompute();

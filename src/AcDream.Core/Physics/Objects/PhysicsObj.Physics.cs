@@ -234,7 +234,17 @@ public sealed partial class PhysicsObj
         ThrowIfRemoved();
         ThrowIfNotFinite(localVelocity, nameof(localVelocity));
         Touch();
-        SetVelocity(_position.Frame.LocalToGlobalVec(localVelocity));
+        SetVelocity(LocalToGlobalInRetailOrder(in _position.Frame, localVelocity));
+    }
+
+    // set_local_velocity's own product sum (acclient.c:318622-318630): m[0]*x + m[3]*y + m[6]*z per row, left to right, in
+    // that order (Frame::localtoglobalvec sums the z term first). Float products are exact in double; one rounding to float.
+    internal static Vector3 LocalToGlobalInRetailOrder(in Frame f, Vector3 v)
+    {
+        double x = (double)f.M11 * v.X + (double)f.M21 * v.Y + (double)f.M31 * v.Z;
+        double y = (double)f.M12 * v.X + (double)f.M22 * v.Y + (double)f.M32 * v.Z;
+        double z = (double)f.M13 * v.X + (double)f.M23 * v.Y + (double)f.M33 * v.Z;
+        return new Vector3((float)x, (float)y, (float)z);
     }
 
     /// <summary>Sets the angular velocity, rad/s in world axes (a plain store, as retail).</summary>

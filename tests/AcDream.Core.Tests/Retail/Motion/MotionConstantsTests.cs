@@ -38,11 +38,13 @@ public class MotionConstantsTests
     }
 
     [Fact]
-    public void TurnAnimSpeed_IsHalfPiAsFloat()
+    public void TurnAnimSpeed_IsTheHumanoidTablesOmega()
     {
-        Assert.Equal(1.5707964f, RetailSpeedMotionTable.TurnAnimSpeed);
-        Assert.Equal(0x3FC90FDBu, Bits(RetailSpeedMotionTable.TurnAnimSpeed));
-        Assert.Equal((float)(Math.PI / 2), RetailSpeedMotionTable.TurnAnimSpeed);
+        // Data-derived: the humanoid motion table 0x09000001's TurnRight modifier carries omega.z = -1.5 rad/s (the one
+        // reading of the installed data found); no client constant exists (add_motion acclient.c:337430 multiplies the
+        // motion data's omega by the speed).
+        Assert.Equal(1.5f, RetailSpeedMotionTable.TurnAnimSpeed);
+        Assert.Equal(0x3FC00000u, Bits(RetailSpeedMotionTable.TurnAnimSpeed));
     }
 
     [Fact]

@@ -121,20 +121,20 @@ public class MotionInterpVelocityTests
     [Fact]
     public void Turn_IsHalfPiPerSecond_15TimesWithRunKey_LeftIsNegativeSpeed()
     {
-        // TurnRight at 1: omega.z = (float)(1 * -(double)1.5707964f) = -1.5707964 rad/s (clockwise seen from above).
+        // TurnRight at 1: omega.z = (float)(1 * -(double)1.5f) = -1.5 rad/s (clockwise seen from above).
         var (_, mm, mi, table) = MotionFixture.Create(new PlayerWeenie { RunSkill = 200 });
         mm.DoMotion(MotionCommand.TurnRight, MotionFixture.Params());
         Assert.Equal(1f, mi.InterpretedState.TurnSpeed);
-        Assert.Equal(new Vector3(0f, 0f, -1.5707964f), table.Omega);
+        Assert.Equal(new Vector3(0f, 0f, -1.5f), table.Omega);
         Assert.Equal(Vector3.Zero, mi.GetStateVelocity());
 
-        // TurnLeft with the run key: TurnRight at -1, then * 1.5 = -1.5; omega.z = (float)(-1.5 * -1.5707964f) = 2.3561945.
+        // TurnLeft with the run key: TurnRight at -1, then * 1.5 = -1.5; omega.z = (float)(-1.5 * -1.5) = 2.25.
         mm.StopMotion(MotionCommand.TurnRight, MotionFixture.Params());
         Assert.Equal(Vector3.Zero, table.Omega);
         mm.DoMotion(MotionCommand.TurnLeft, MotionFixture.Params(1f, HoldKey.Run));
         Assert.Equal(MotionCommand.TurnRight, mi.InterpretedState.TurnCommand);
         Assert.Equal(-1.5f, mi.InterpretedState.TurnSpeed);
-        Assert.Equal((float)(-1.5 * -(double)1.5707964f), table.Omega.Z);
+        Assert.Equal(2.25f, table.Omega.Z);
     }
 
     [Fact]
