@@ -13,11 +13,11 @@ namespace AcDream.Core.Tests.Behavior;
 // Issue #25 item 1, the running-jump landing burst: retail keeps the launch velocity on landing and lets friction take
 // it off while the run's root motion starts again, so just after touchdown the body moves at root motion + kept velocity.
 // Retail path: CMotionInterp::LeaveGround (acclient.c:344456) sets the local velocity get_leave_ground_velocity = state
-// velocity (the run) with z = the jump's vz; in the air UpdatePositionInternal (acclient.c:317xxx, CPhysicsObj.c
-// UpdatePositionInternal) scales the root motion by 0 (not ON_WALKABLE) and calc_friction (acclient.c:316090) does nothing
-// (not ON_WALKABLE). Landing: SetPositionInternal -> set_on_walkable(1) -> MovementManager::HitGround ->
-// CMotionInterp::HitGround (acclient.c:344428), which only calls RemoveLinkAnimations and apply_current_movement (the motion
-// table plays the run again; no velocity is set), and handle_all_collisions (acclient.c CPhysicsObj.c:6227) bounces only
+// velocity (the run) with z = the jump's vz; in the air UpdatePositionInternal (acclient.c:319988) scales the root motion
+// by 0 (not ON_WALKABLE) and calc_friction (acclient.c:316090) does nothing (not ON_WALKABLE). Landing:
+// SetPositionInternal (322503) -> set_on_walkable(1) (318501) -> MovementManager::HitGround -> CMotionInterp::HitGround
+// (acclient.c:344428), which only calls RemoveLinkAnimations and apply_current_movement (the motion table plays the run
+// again; no velocity is set), and handle_all_collisions (acclient.c:321807) bounces only
 // the component along the collision normal (+z) by (1 + elasticity). Nothing clears the horizontal velocity: it decays
 // by calc_friction's (1 - 0.95)^dt on the ground until |v|^2 - 0.0625 < 0.0002 zeroes it (UpdatePhysicsInternal).
 public class RunningJumpLandingTests
