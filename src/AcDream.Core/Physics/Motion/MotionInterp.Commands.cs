@@ -549,6 +549,8 @@ public sealed partial class MotionInterp
     // retail: CMotionInterp::HandleExitWorld (acclient.c:343678)
     internal void HandleExitWorld()
     {
+        // non-retail: retail loops while the list is non-empty and removes a node only with a physics object, so without one
+        // it never ends (acclient.c:343678-343713); the port stops and leaves the motions pending (docs/divergences.md)
         while (_physicsObj is not null && PendingMotions.Count != 0)
         {
             MotionDone(true);
