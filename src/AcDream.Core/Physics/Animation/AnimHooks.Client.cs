@@ -184,8 +184,16 @@ public sealed class ReplaceObjectHook : AnimHook
     /// <summary>The new part's GfxObj data id (0x01000000 plus the packed value).</summary>
     public uint PartId { get; private set; }
 
-    // A byte and a packed id of two or four bytes.
-    private protected override int BodySize => PartId - 0x01000000u > 0x7FFFu ? 5 : 3;
+    // AnimPartChange::Pack (acclient.c:471681): the byte, then the id packed by Pack_AsDataIDOfKnownType (acclient.c:667688)
+    // as an offset from 0x01000000 (an id of 0 as offset 0): two bytes up to 0x3FFF, four up to 0x3FFFFFFF, none beyond.
+    private protected override int BodySize
+    {
+        get
+        {
+            uint offset = (PartId == 0 ? 0x01000000u : PartId) - 0x01000000u;
+            return 1 + (offset > 0x3FFF ? (offset > 0x3FFFFFFF ? 0 : 4) : 2);
+        }
+    }
 
     /// <inheritdoc />
     public override void Execute(PhysicsObj obj) => Notify(obj);
