@@ -168,6 +168,26 @@ public class AnimClipUnPackTests
         // Their packed sizes: 8 + 1 + 2 = 11 -> 12 for the short id, 8 + 1 + 4 = 13 -> 16 for the long one.
         Assert.Equal(12, r.PackSize());
         Assert.Equal(16, r2.PackSize());
+
+        // CAnimHook::PackHook (acclient.c:342153) writes every hook back to the very bytes it was read from.
+        byte[] original = w.ToArray();
+        int hooksStart = 4 * 5; // id, flags, parts, frames, hook count
+        byte[] packed = new byte[original.Length - hooksStart];
+        int at = 0;
+        for (AnimHook? p = frame.Hooks; p is not null; p = p.Next)
+        {
+            int before = at;
+            p.PackHook(packed, ref at);
+            Assert.Equal(p.PackSize(), at - before);
+        }
+
+        Assert.Equal(packed.Length, at);
+        Assert.Equal(original.AsSpan(hooksStart).ToArray(), packed);
+        Assert.Throws<ArgumentException>(() =>
+        {
+            int o = 0;
+            frame.Hooks!.Next!.PackHook(new byte[11], ref o); // a sound hook needs 12
+        });
     }
 
     [Fact]
