@@ -45,18 +45,18 @@ public sealed class RenderPoseApiTests
         Position before = s.Player.Position;
         s.World.Tick(3.0 / 30.0);
         Assert.Equal(before, s.Player.PreviousPose);
-        Assert.Equal(s.Player.Position, s.Player.CurrentPose);
+        Assert.Equal(s.Player.Position, s.Player.Position);
         Assert.Equal(2.0 / 30.0, s.Player.PreviousPoseTime);
         Assert.Equal(3.0 / 30.0, s.Player.CurrentPoseTime);
-        Assert.Equal(3.12f / 30f, s.Player.CurrentPose.Frame.Origin.Y - s.Player.PreviousPose.Frame.Origin.Y, 4);
+        Assert.Equal(3.12f / 30f, s.Player.Position.Frame.Origin.Y - s.Player.PreviousPose.Frame.Origin.Y, 4);
 
         // Half way in time: half way in space; before and after the pair: its ends (no extrapolation).
         double mid = (2.0 / 30.0 + 3.0 / 30.0) / 2.0;
-        float midY = (s.Player.PreviousPose.Frame.Origin.Y + s.Player.CurrentPose.Frame.Origin.Y) / 2f;
+        float midY = (s.Player.PreviousPose.Frame.Origin.Y + s.Player.Position.Frame.Origin.Y) / 2f;
         Assert.Equal(midY, s.Player.GetRenderPose(mid).Frame.Origin.Y, 5);
         Assert.Equal(s.Player.PreviousPose, s.Player.GetRenderPose(0.0));
-        Assert.Equal(s.Player.CurrentPose, s.Player.GetRenderPose(1.0));
-        Assert.Equal(s.Player.CurrentPose, s.Player.GetRenderPose(3.0 / 30.0));
+        Assert.Equal(s.Player.Position, s.Player.GetRenderPose(1.0));
+        Assert.Equal(s.Player.Position, s.Player.GetRenderPose(3.0 / 30.0));
     }
 
     [Fact]
@@ -71,11 +71,11 @@ public sealed class RenderPoseApiTests
             s.World.Tick(i / 30.0);
         }
 
-        double h0 = s.Player.PreviousPose.Frame.Heading, h1 = s.Player.CurrentPose.Frame.Heading;
+        double h0 = s.Player.PreviousPose.Frame.Heading, h1 = s.Player.Position.Frame.Heading;
         Assert.True(h1 - h0 > 1.0, $"the player turned ({h0} -> {h1})");
         Position mid = s.Player.GetRenderPose((s.Player.PreviousPoseTime + s.Player.CurrentPoseTime) / 2.0);
         Assert.Equal((h0 + h1) / 2.0, mid.Frame.Heading, 3);
-        Assert.Equal(s.Player.CurrentPose.Frame.Origin.X, mid.Frame.Origin.X, 4);
+        Assert.Equal(s.Player.Position.Frame.Origin.X, mid.Frame.Origin.X, 4);
     }
 
     [Fact]
@@ -94,6 +94,7 @@ public sealed class RenderPoseApiTests
         var dest = new Position(LandDefs.OutdoorCellId(0xA9B4FFFF, 180f, 60f), Frame.FromHeading(new Vector3(180f, 60f, 0f), 0.0));
         Assert.Equal(SetPositionError.Ok, s.Player.SetPositionSimple(dest, true));
         Position atOnce = s.Player.GetRenderPose(s.World.RenderTime);
+        Assert.True(s.Player.IsPlacedSinceLastUpdate);
         Assert.Equal(s.Player.Position, atOnce);
         Assert.Equal(180f, atOnce.Frame.Origin.X, 3);
         for (int i = 61; i <= 120; i++)
@@ -118,7 +119,7 @@ public sealed class RenderPoseApiTests
         s.World.StepObserver = new TeleportOnce(dest);
         s.World.Tick(3.0 / 30.0);
         s.World.StepObserver = null;
-        Assert.Equal(s.Player.CurrentPose, s.Player.PreviousPose);
+        Assert.Equal(s.Player.Position, s.Player.PreviousPose);
         Assert.Equal(s.Player.Position, s.Player.GetRenderPose(2.5 / 30.0));
         Assert.InRange(s.Player.GetRenderPose(2.5 / 30.0).Frame.Origin.X, 19.9f, 20.1f);
     }
@@ -127,6 +128,7 @@ public sealed class RenderPoseApiTests
     public void NewObject_BeforeAnyUpdate_IsDrawnWhereItStands()
     {
         var s = new WalkingPlayerScene(new Vector3(100f, 20f, 0f));
+        Assert.True(s.Player.IsPlacedSinceLastUpdate);
         Assert.Equal(s.Player.Position, s.Player.GetRenderPose(0.0));
         Assert.Equal(s.Player.Position, s.Player.GetRenderPose(-100.0));
     }

@@ -246,6 +246,7 @@ public sealed partial class PhysicsObj
                 nameof(t));
         }
 
+        CutPose();
         CommitTransitionInternal(t, null, null);
     }
 

@@ -10,50 +10,66 @@ namespace AcDream.Core.Physics.Objects;
 // here is read by the physics, so the simulation is bit-identical with or without it.
 public sealed partial class PhysicsObj
 {
-    private Position _posePrev;
-    private Position _poseCurr;
+    // The pose the object's last update by the world tick began from, compact (cell, origin, quaternion: 32 bytes; the
+    // cached matrix is rebuilt on read), and the times of that pose and of the update's end. The pose the update ended with
+    // is Position itself unless the object was placed since (_poseCut).
+    private uint _posePrevCell;
+    private Vector3 _posePrevOrigin;
+    private Quaternion _posePrevRotation;
     private double _posePrevTime;
     private double _poseCurrTime;
 
-    // A placement (teleport, blip, set frame, enter world, lost cell) happened since the object's update began: that update's
-    // pose pair is not blended.
-    private bool _poseCut;
+    // A placement (teleport, blip, set frame, enter world, lost cell, a client's commit) since the last recorded pose: the
+    // object is drawn at Position, not blended, until its next update records a new pair.
+    private bool _poseCut = true;
 
     /// <summary>
-    /// The object's physics pose before its last update by the world tick (library addition for render interpolation; no retail
-    /// symbol): its <see cref="Position"/> as that update began. Equal to <see cref="CurrentPose"/> when that update placed the
-    /// object (a teleport or blip, <see cref="SetPosition"/>, <see cref="EnterWorld"/>...), which is drawn without blending.
+    /// The object's physics pose as its last update by the world tick began (library addition for render interpolation; no
+    /// retail symbol); the pose that update ended with is <see cref="Position"/>. Equal to it when that update placed the object
+    /// (a teleport or blip), which is drawn without blending.
     /// </summary>
-    public Position PreviousPose => _posePrev;
+    public Position PreviousPose
+    {
+        get
+        {
+            Frame f = Frame.Identity;
+            f.Origin = _posePrevOrigin;
+            Quaternion q = _posePrevRotation;
+            f.SetQuaternionRaw(q.W, q.X, q.Y, q.Z);
+            f.Cache();
+            return new Position(_posePrevCell, f);
+        }
+    }
 
     /// <summary>The client-clock time <see cref="PreviousPose"/> belongs to, seconds: the object's <see cref="UpdateTime"/> as
-    /// its last update began (library addition).</summary>
+    /// its last update by the world tick began (library addition).</summary>
     public double PreviousPoseTime => _posePrevTime;
 
-    /// <summary>
-    /// The object's physics pose after its last update by the world tick (library addition for render interpolation): its
-    /// <see cref="Position"/> as that update ended. <see cref="Position"/> differs from it only when something placed the object
-    /// since (a placement between ticks, a parent's move); <see cref="GetRenderPose"/> then answers <see cref="Position"/>.
-    /// </summary>
-    public Position CurrentPose => _poseCurr;
-
-    /// <summary>The client-clock time <see cref="CurrentPose"/> belongs to, seconds: the object's <see cref="UpdateTime"/> as its
-    /// last update ended (library addition).</summary>
+    /// <summary>The client-clock time the pose of the object's last update by the world tick belongs to, seconds: its
+    /// <see cref="UpdateTime"/> as that update ended (library addition). That pose is <see cref="Position"/> unless
+    /// <see cref="IsPlacedSinceLastUpdate"/>.</summary>
     public double CurrentPoseTime => _poseCurrTime;
+
+    /// <summary>True when the object was placed since its last update by the world tick recorded its poses (a teleport,
+    /// <see cref="SetPosition"/>, <see cref="EnterWorld"/>, <see cref="SetFrame"/>, <see cref="CommitTransition"/>...; also
+    /// before its first update) or is attached to a parent: <see cref="GetRenderPose"/> then answers <see cref="Position"/>,
+    /// not a blend (library addition).</summary>
+    public bool IsPlacedSinceLastUpdate => _poseCut || Parent is not null;
 
     /// <summary>
     /// The pose to draw at <paramref name="renderTime"/> (library addition for render interpolation; no retail symbol): the
-    /// blend of <see cref="PreviousPose"/> and <see cref="CurrentPose"/> at the fraction of their times that
-    /// <paramref name="renderTime"/> reaches — the origin interpolated linearly, the rotation spherically (shortest arc), both
-    /// in <see cref="CurrentPose"/>'s landblock frame (the previous pose is moved into it first, so a landblock crossing blends
-    /// straight across the edge), and the cell re-homed to the outdoor cell under the blended origin (indoor: the nearer
-    /// pose's cell). Draw every object at <see cref="PhysicsWorld.RenderTime"/>.
+    /// blend of <see cref="PreviousPose"/> and <see cref="Position"/> at the fraction of their times
+    /// (<see cref="PreviousPoseTime"/>, <see cref="CurrentPoseTime"/>) that <paramref name="renderTime"/> reaches — the origin
+    /// interpolated linearly, the rotation spherically (shortest arc), both in <see cref="Position"/>'s landblock frame (the
+    /// previous pose is moved into it first, so a landblock crossing blends straight across the edge), and the cell the
+    /// outdoor cell under the blended origin (indoor: the nearer pose's cell). Draw every object at
+    /// <see cref="PhysicsWorld.RenderTime"/>.
     /// </summary>
-    /// <param name="renderTime">The time to draw, seconds on the client clock: finite. Before <see cref="PreviousPoseTime"/> it
-    /// answers <see cref="PreviousPose"/>, from <see cref="CurrentPoseTime"/> on <see cref="CurrentPose"/> (no extrapolation).</param>
-    /// <returns>The blended pose; <see cref="Position"/> itself when the object was placed since its last update (a teleport or a
-    /// placement between ticks, an attached object moved by its parent): a teleport or blip is not blended. Reading it changes
-    /// nothing.</returns>
+    /// <param name="renderTime">The time to draw, seconds on the client clock: finite. At or before
+    /// <see cref="PreviousPoseTime"/> it answers <see cref="PreviousPose"/>, from <see cref="CurrentPoseTime"/> on
+    /// <see cref="Position"/> (no extrapolation).</param>
+    /// <returns>The blended pose; <see cref="Position"/> itself when <see cref="IsPlacedSinceLastUpdate"/> (a teleport or blip is
+    /// not blended). Reading it changes nothing.</returns>
     /// <exception cref="ArgumentException"><paramref name="renderTime"/> is NaN or infinite.</exception>
     public Position GetRenderPose(double renderTime)
     {
@@ -62,7 +78,7 @@ public sealed partial class PhysicsObj
             throw new ArgumentException("The render time must be finite (seconds on the client clock).", nameof(renderTime));
         }
 
-        if (_position != _poseCurr)
+        if (IsPlacedSinceLastUpdate)
         {
             return _position;
         }
@@ -71,50 +87,48 @@ public sealed partial class PhysicsObj
         double t1 = _poseCurrTime;
         if (!(renderTime < t1) || !(t1 > t0))
         {
-            return _poseCurr;
+            return _position;
         }
 
         if (!(renderTime > t0))
         {
-            return _posePrev;
+            return PreviousPose;
         }
 
-        return Blend(_posePrev, _poseCurr, (renderTime - t0) / (t1 - t0));
+        return Blend(PreviousPose, _position, (renderTime - t0) / (t1 - t0));
     }
 
-    /// <summary>Starts recording the pose pair of an update: the placements from here on cut it.</summary>
+    /// <summary>Starts an update's pose record: the placements from here on cut it.</summary>
     private void BeginPoseRecord() => _poseCut = false;
 
     /// <summary>Records the pose pair of the update that began at <paramref name="start"/> (time <paramref name="startTime"/>)
-    /// and ended now, at <see cref="UpdateTime"/>; a placement during the update makes both poses the end pose.</summary>
+    /// and ended now, at <see cref="UpdateTime"/>; a placement during the update makes the pair the end pose twice.</summary>
     private void EndPoseRecord(in Position start, double startTime)
     {
         double end = _scene.UpdateTime;
-        _poseCurr = _position;
         _poseCurrTime = end;
         if (_poseCut)
         {
-            _posePrev = _position;
+            _poseCut = false;
+            StorePreviousPose(_position);
             _posePrevTime = end;
         }
         else
         {
-            _posePrev = start;
+            StorePreviousPose(start);
             _posePrevTime = startTime;
         }
     }
 
-    /// <summary>Marks a placement: the pose pair of the update in progress (if any) is not blended.</summary>
-    private void CutPose() => _poseCut = true;
-
-    /// <summary>Sets both recorded poses to the current position at <paramref name="time"/> (a new object).</summary>
-    private void ResetPoses(double time)
+    private void StorePreviousPose(in Position p)
     {
-        _posePrev = _position;
-        _poseCurr = _position;
-        _posePrevTime = time;
-        _poseCurrTime = time;
+        _posePrevCell = p.ObjCellId;
+        _posePrevOrigin = p.Frame.Origin;
+        _posePrevRotation = new Quaternion(p.Frame.Qx, p.Frame.Qy, p.Frame.Qz, p.Frame.Qw);
     }
+
+    /// <summary>Marks a placement: the object is drawn at its position, not blended, until its next update's record.</summary>
+    private void CutPose() => _poseCut = true;
 
     // The blend of two poses at fraction a in (0, 1), in b's landblock frame.
     private static Position Blend(in Position a, in Position b, double f)

@@ -75,7 +75,6 @@ public sealed partial class PhysicsObj
         _state = (PhysicsState)PhysicsGlobals.DefaultState;
         MassInv = 1.0f / PhysicsGlobals.DefaultMass;
         Scale = PhysicsGlobals.DefaultScale;
-        ResetPoses(world.CurrentTime);
     }
 
     /// <summary>The world that owns the object.</summary>
