@@ -106,6 +106,13 @@ public sealed partial class PhysicsObj
     private void EndPoseRecord(in Position start, double startTime)
     {
         double end = _scene.UpdateTime;
+        if (!_poseCut && !(end > startTime))
+        {
+            // No time consumed (a dt at or below EPSILON, or one the ACE profile accumulates): no step ran and nothing placed
+            // the object, so the pair recorded before still describes its path.
+            return;
+        }
+
         _poseCurrTime = end;
         if (_poseCut)
         {
