@@ -2,7 +2,9 @@ using System;
 using System.Globalization;
 using System.IO;
 using System.Numerics;
+using AcDream.Core.Physics.Input;
 using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
@@ -12,21 +14,30 @@ namespace AcDream.Samples.FirstScene;
 
 /// <summary>
 /// A client's first scene (docs/getting-started.md walks through it): the terrain around Holtburg, a player built from the human
-/// Setup walking, turning, running, jumping and walking into a hut, a remote creature fed position reports every 0.2 s, and a
-/// fade; each simulated second it prints what a developer wants to see. Options: <c>--seconds N</c> (default 60; the script
-/// takes 24), <c>--fps N</c> (default 60), <c>--terrain DIR</c> (the ac-terrain folder; else ACDREAM_TERRAIN_DIR, else
-/// ../shared/data/ac-terrain above the program or the current folder), <c>--synthetic</c> (skip the real terrain).
-/// Exits 1 when the scene did not do what it should (CI smoke-runs it).
+/// Setup walking, turning, running, jumping and walking into a hut, driven by its movement keys through
+/// <see cref="PlayerInput"/>, a remote creature fed position reports every 0.2 s, and a fade. Each frame it ticks the world and
+/// takes the pose to draw (<see cref="PhysicsObj.GetRenderPose"/> at <see cref="PhysicsWorld.RenderTime"/>); each simulated
+/// second it prints that drawn pose and what a developer wants to see. Options: see <c>--help</c>. Exits 1 when the scene did
+/// not do what it should (CI smoke-runs it).
 /// </summary>
 public static class Program
 {
-    private const double ScriptSeconds = 24.0;
+    private const string Usage = """
+        AcDream.Samples.FirstScene: a player walks, runs, jumps and walks into a hut; a remote creature follows its reports.
+        Options:
+          --seconds N    simulated seconds (default 24: the scene's script; longer runs stand still)
+          --fps N        frames per second of the render loop (default 60)
+          --terrain DIR  the ac-terrain folder (default: ACDREAM_TERRAIN_DIR, else ../shared/data/ac-terrain above the
+                         program or the current folder)
+          --synthetic    synthetic slopes instead of the real terrain
+          --help         this text
+        """;
 
     /// <summary>Runs the scene.</summary>
     public static int Main(string[] args)
     {
         ArgumentNullException.ThrowIfNull(args);
-        double seconds = 60.0;
+        double seconds = KeyScript.Seconds;
         int fps = 60;
         string? terrainDir = null;
         bool synthetic = false;
@@ -46,8 +57,12 @@ public static class Program
                 case "--synthetic":
                     synthetic = true;
                     break;
+                case "--help" or "-h":
+                    Console.WriteLine(Usage);
+                    return 0;
                 default:
-                    Console.Error.WriteLine($"unknown argument '{args[i]}'; options: --seconds N, --fps N, --terrain DIR, --synthetic");
+                    Console.Error.WriteLine($"unknown argument '{args[i]}'");
+                    Console.Error.WriteLine(Usage);
                     return 2;
             }
         }
@@ -69,7 +84,7 @@ public static class Program
         // NoMotionTable). A client with real motion tables plugs its own in here.
         var body = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
         player.PartArray = body;
-        player.Weenie = PlayerControl.Character();
+        player.Weenie = KeyScript.Character();
         if (!player.EnterWorld(Scene.OnGround(terrain, 60f, 40f, heading: 0f)))
         {
             Console.Error.WriteLine("the player could not enter the world");
@@ -83,20 +98,28 @@ public static class Program
             return 1;
         }
 
-        var controls = new PlayerControl(player, body);
+        // 4. The player's input: the movement keys become retail's motion commands (a client passes its keyboard's state).
+        var input = new PlayerInput(player);
         var remote = new RemoteCreature(world, terrain);
         var check = new SceneCheck();
         bool faded = false;
-        Console.WriteLine("   t  player cell     x       y       z     contact  speed  heading  command                         | creature  error  transl.");
+        Console.WriteLine("   t  drawn cell      x       y       z     contact  speed  heading  doing                           | creature  error  transl.");
         int frames = (int)Math.Round(seconds * fps);
         string command = "";
         for (int i = 1; i <= frames; i++)
         {
             double now = (double)i / fps;
 
-            // 4. Each frame: network input first (remote objects), then the player's controls, then the world tick.
+            // 5. Each frame: network input first (remote objects), then the player's keys, then the world tick, then drawing:
+            //    every object at its blended pose for the render time (the world moves objects at most 30 times a second, at
+            //    a cadence that depends on the frame rate; the blend is evenly spaced at any).
             remote.Deliver(now);
-            command = controls.Drive(now);
+            (MovementKeys keys, command) = KeyScript.At(now);
+            input.SetHeldKeys(keys);
+            if ((keys & MovementKeys.Jump) == 0 && command == "run east (jump)" && input.LastError != MotionError.None)
+            {
+                command = $"jump refused ({input.LastError})";
+            }
             if (!faded && now >= 20.0 && remote.Obj is not null)
             {
                 faded = true;
@@ -105,18 +128,19 @@ public static class Program
 
             world.Tick(now);
             check.Observe(terrain, player, now);
+            Position drawn = player.GetRenderPose(world.RenderTime);   // a renderer draws this
             if (i % fps == 0)
             {
-                Print(player, remote, now, command);
+                Print(player, drawn, remote, now, command);
             }
         }
 
-        return seconds >= ScriptSeconds ? check.Report(remote, seconds) : 0;
+        return seconds >= KeyScript.Seconds ? check.Report(remote, seconds) : 0;
     }
 
-    private static void Print(PhysicsObj player, RemoteCreature remote, double now, string command)
+    private static void Print(PhysicsObj player, in Position drawn, RemoteCreature remote, double now, string command)
     {
-        Vector3 o = player.Position.Frame.Origin;
+        Vector3 o = drawn.Frame.Origin;
         Vector3 v = player.CachedVelocity;
         float speed = MathF.Sqrt(v.X * v.X + v.Y * v.Y);
         TransientState ts = player.TransientState;
@@ -124,7 +148,7 @@ public static class Program
         string creature = remote.Obj is null ? "(none yet)" : string.Create(CultureInfo.InvariantCulture,
             $"{remote.ErrorAt(now),5:F2} m  {remote.Obj.Translucency,4:F2}");
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"{now,4:F0}  0x{player.Position.ObjCellId:X8} {o.X,7:F2} {o.Y,7:F2} {o.Z,7:F2}  {contact,-8} {speed,5:F2}  {player.Position.Frame.Heading,6:F1}  {command,-31} | {creature}"));
+            $"{now,4:F0}  0x{drawn.ObjCellId:X8} {o.X,7:F2} {o.Y,7:F2} {o.Z,7:F2}  {contact,-8} {speed,5:F2}  {drawn.Frame.Heading,6:F1}  {command,-31} | {creature}"));
     }
 
     // The ac-terrain folder: ACDREAM_TERRAIN_DIR, else ../shared/data/ac-terrain beside a folder above the program or the

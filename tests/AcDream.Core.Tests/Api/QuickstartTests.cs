@@ -61,7 +61,8 @@ public sealed class QuickstartTests
         var body = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
         player.PartArray = body;                                // the human Setup's shape; retail's walk/run/turn speeds
         player.Weenie = new PlayerWeenie { RunSkill = 200, JumpSkill = 100, Strength = 100 };
-        player.EnterWorld(new Position(0xA9B40025, new Vector3(100f, 100f, 0f)));
+        var spawn = new Vector3(100f, 100f, 0f);                // landblock-local metres; its outdoor cell is 0xA9B40025
+        player.EnterWorld(new Position(LandDefs.OutdoorCellId(0xA9B4FFFF, spawn.X, spawn.Y), spawn));
         world.Player = player;                                  // the player gets retail's movement manager
         System.Diagnostics.Debug.Assert(player.SetupIssues == ObjectSetupIssues.None);
         MovementManager mm = MovementManager.Of(player);

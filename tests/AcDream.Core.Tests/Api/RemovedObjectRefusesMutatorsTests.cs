@@ -30,7 +30,7 @@ public sealed class RemovedObjectRefusesMutatorsTests
     // Members of PhysicsObj that only read (allowed on a removed object).
     private static readonly HashSet<string> Reads = new(StringComparer.Ordinal)
     {
-        "GetUpdateTime", "IsMovingTo",
+        "GetRenderPose", "GetUpdateTime", "IsMovingTo",
     };
 
     // No member is left out: the movement members (GetOrCreateMotionInterpreter, MakeMovementManager, the Movement setter)

@@ -156,6 +156,7 @@ public class WakeRuleTests
     [
         "CheckCollision(PhysicsObj)",
         "DetermineQuadrant(Position, Single, Position)",
+        "GetRenderPose(Double)",
         "GetUpdateTime(PhysicsTimeStamp)",
         "IsMovingTo()",
     ];

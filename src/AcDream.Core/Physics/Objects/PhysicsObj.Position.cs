@@ -24,6 +24,7 @@ public sealed partial class PhysicsObj
         // non-retail: the frame's domain is checked before anything changes (retail stores any frame)
         InputLimits.ThrowIfOutside(_position.ObjCellId, frame, nameof(frame));
         Touch();
+        CutPose();
         SetFrameInternal(frame);
     }
 
@@ -59,6 +60,7 @@ public sealed partial class PhysicsObj
         // non-retail: the frame's domain is checked before anything changes
         InputLimits.ThrowIfOutside(_position.ObjCellId, frame, nameof(frame));
         Touch();
+        CutPose();
         _position.Frame = frame;
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
@@ -83,6 +85,7 @@ public sealed partial class PhysicsObj
         }
 
         Touch();
+        CutPose();
         Frame f = _position.Frame;
         f.SetHeading(degrees);
         SetFrameInternal(f);
@@ -101,6 +104,7 @@ public sealed partial class PhysicsObj
         // non-retail: the position's domain is checked before anything changes (retail stores any position)
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
+        CutPose();
         StorePositionInternal(p);
     }
 
@@ -158,6 +162,7 @@ public sealed partial class PhysicsObj
         ThrowIfRemoved();
         InputLimits.ThrowIfOutside(p, nameof(p));
         Touch();
+        CutPose();
         return World.Sweep.SetPosition(this, p, flags);
     }
 
@@ -187,6 +192,7 @@ public sealed partial class PhysicsObj
         }
 
         Touch();
+        CutPose();
         StorePositionInternal(p);
         if (Parent is not null)
         {
@@ -240,6 +246,7 @@ public sealed partial class PhysicsObj
                 nameof(t));
         }
 
+        CutPose();
         CommitTransitionInternal(t, null, null);
     }
 
@@ -362,6 +369,7 @@ public sealed partial class PhysicsObj
     internal void GoToLostCellInternal(in Position p)
     {
         Touch();
+        CutPose();
         RemoveShadowsFromCells();
         LeaveCell();
         // The engine's own lost positions can be outside the domain (a sweep past the world edge): stored unchecked.

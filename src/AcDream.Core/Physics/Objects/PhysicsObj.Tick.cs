@@ -48,6 +48,9 @@ public sealed partial class PhysicsObj
         // The profile's slicing (retail: EPSILON gate, MaxQuantum slices, remainder above MinQuantum; ACE: 1/30 s gate that
         // keeps accumulating time, 0.1 s slices). See QuantumSlicer.
         double start = UpdateTime;
+        // non-retail: the pose this update starts from, for render interpolation (PhysicsObj.RenderPose.cs)
+        Position startPose = _position;
+        BeginPoseRecord();
         world.PhysicsTime = start;
         var slicer = new QuantumSlicer(world.Profile, start, world.CurrentTime);
         // non-retail: a callback that removed the object from its world ends its update
@@ -58,6 +61,7 @@ public sealed partial class PhysicsObj
         }
 
         UpdateTime = slicer.EndTime(start);
+        EndPoseRecord(startPose, start);
     }
 
     /// <summary>One simulation step of <paramref name="quantum"/> seconds (active: move, sweep or set the frame, run the

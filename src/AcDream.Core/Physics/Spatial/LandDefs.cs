@@ -80,6 +80,44 @@ public static class LandDefs
     public static uint BlockIdOf(uint cellId) => (cellId & 0xFFFF0000u) | 0xFFFFu;
 
     /// <summary>
+    /// The id of the outdoor cell that contains the point (<paramref name="x"/>, <paramref name="y"/>) of a landblock:
+    /// <c>0xXXYY0000 | (cx · 8 + cy + 1)</c>, with cx = ⌊x / 24⌋ and cy = ⌊y / 24⌋ the point's 24 m cell column and row
+    /// (docs/terrain.md). Library helper (no retail symbol; the numbering is retail's <c>LandDefs::lcoord_to_gid</c>).
+    /// </summary>
+    /// <param name="landblockId">The landblock, 0xXXYYFFFF (the low word is ignored, so any cell id of the landblock serves);
+    /// XX and YY in 0x00..0xFE.</param>
+    /// <param name="x">East coordinate local to the landblock, metres: finite, in [0, 192).</param>
+    /// <param name="y">North coordinate local to the landblock, metres: finite, in [0, 192).</param>
+    /// <returns>The outdoor cell id, e.g. 0xA9B40025 for (100, 100) in landblock 0xA9B4FFFF (cell column 4, row 4:
+    /// 4 · 8 + 4 + 1 = 37 = 0x25).</returns>
+    /// <exception cref="ArgumentOutOfRangeException">The landblock lies outside the world (XX or YY is 0xFF), or x or y is
+    /// NaN, infinite or outside [0, 192) (a point beyond the edge belongs to another landblock: re-home it with
+    /// <see cref="Position.TryAdjustToOutside"/>).</exception>
+    public static uint OutdoorCellId(uint landblockId, float x, float y)
+    {
+        if ((landblockId >> 24) >= LandblocksPerSide || ((landblockId >> 16) & 0xFFu) >= LandblocksPerSide)
+        {
+            throw new ArgumentOutOfRangeException(nameof(landblockId), landblockId,
+                "The landblock's column and row (0xXXYY....) must be 0x00..0xFE: 0xFF lies outside the world.");
+        }
+
+        ThrowIfOutsideBlock(x, nameof(x));
+        ThrowIfOutsideBlock(y, nameof(y));
+        uint cx = (uint)(x / CellLength);
+        uint cy = (uint)(y / CellLength);
+        return (landblockId & 0xFFFF0000u) | (cx * BlockSide + cy + 1u);
+    }
+
+    private static void ThrowIfOutsideBlock(float v, string paramName)
+    {
+        if (!(v >= 0f && v < BlockLength))
+        {
+            throw new ArgumentOutOfRangeException(paramName, v,
+                "A landblock-local coordinate must be finite and in [0, 192) metres; beyond the edge it belongs to another landblock.");
+        }
+    }
+
+    /// <summary>
     /// True when global outdoor cell coordinates lie inside the world.
     /// </summary>
     // retail: LandDefs::in_bounds (acclient.c:122253)
