@@ -1,7 +1,7 @@
 namespace AcDream.Core.Physics.Animation;
 
 // CMotionTable's state logic: from a motion and the current state to the links and cycle queued on the sequence.
-internal sealed partial class MotionTable
+public sealed partial class MotionTable
 {
     /// <summary>
     /// Plays <paramref name="motion"/> from <paramref name="state"/>: a style change (the links out of the old style and into
@@ -69,13 +69,13 @@ internal sealed partial class MotionTable
                     MotionData? motiona = GetLink(state.Style, newSubstate, state.SubstateMod, motion, speedMod);
                     if (motiona is null && motion != state.Style)
                     {
-                        motiona = GetLink(state.Style, newSubstate, 1f, DefaultStyle, 1f);
-                        if (TryStyleDefault(DefaultStyle, out uint d2))
+                        motiona = GetLink(state.Style, newSubstate, 1f, _defaultStyle, 1f);
+                        if (TryStyleDefault(_defaultStyle, out uint d2))
                         {
                             mtype2 = d2;
                         }
 
-                        link2 = GetLink(DefaultStyle, mtype2, 1f, motion, 1f);
+                        link2 = GetLink(_defaultStyle, mtype2, 1f, motion, 1f);
                     }
 
                     sequence.ClearPhysics();
@@ -97,10 +97,10 @@ internal sealed partial class MotionTable
         if ((motion & 0x40000000) != 0)
         {
             MotionData? linka = Cycle((motion & 0xFFFFFF) | (state.Style << 16))
-                                ?? Cycle((motion & 0xFFFFFF) | (DefaultStyle << 16));
+                                ?? Cycle((motion & 0xFFFFFF) | (_defaultStyle << 16));
             if (linka is not null && IsAllowed(motion, linka, state))
             {
-                if (motion == mtype2 && SameSign(speedMod, state.SubstateMod) && sequence.HasAnims())
+                if (motion == mtype2 && SameSign(speedMod, state.SubstateMod) && sequence.HasAnims)
                 {
                     ChangeCycleSpeed(sequence, linka, state.SubstateMod, speedMod);
                     SubtractMotion(sequence, linka, state.SubstateMod);
@@ -335,20 +335,20 @@ internal sealed partial class MotionTable
     internal bool SetDefaultState(MotionState state, AnimSequence sequence, out uint numAnims)
     {
         numAnims = 0;
-        if (!TryStyleDefault(DefaultStyle, out uint defaultSubstate))
+        if (!TryStyleDefault(_defaultStyle, out uint defaultSubstate))
         {
             return false;
         }
 
         state.ClearModifiers();
         state.ClearActions();
-        MotionData? cycle = Cycle((DefaultStyle << 16) | (defaultSubstate & 0xFFFFFF));
+        MotionData? cycle = Cycle((_defaultStyle << 16) | (defaultSubstate & 0xFFFFFF));
         if (cycle is null)
         {
             return false;
         }
 
-        state.Style = DefaultStyle;
+        state.Style = _defaultStyle;
         state.Substate = defaultSubstate;
         state.SubstateMod = 1f;
         numAnims = N(cycle) - 1;

@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Data;
 namespace AcDream.Core.Physics.Animation;
 
 // CMotionTable::UnPack: a motion table from a data file entry's bytes.
-internal sealed partial class MotionTable
+public sealed partial class MotionTable
 {
     // The smallest MotionData: id, three bytes and their padding.
     private const int MinMotionDataSize = 8;
@@ -17,10 +17,12 @@ internal sealed partial class MotionTable
     /// <c>MotionData</c>s whose id is the key); the links (a count, then for each an outer key, a count and that many
     /// <c>MotionData</c>s keyed by their id).
     /// </summary>
-    /// <exception cref="RetailDataFormatException">The bytes end early, a count is larger than the bytes left, or a
-    /// motion's velocity or omega is not finite.</exception>
+    /// <param name="entry">The entry's bytes (its id first).</param>
+    /// <returns>The table: read-only, shareable by every object that plays it.</returns>
+    /// <exception cref="RetailDataFormatException">The bytes end early, a count is larger than the bytes left, a framerate
+    /// is outside <see cref="AnimData"/>'s domain, or a motion's velocity or omega is not finite or longer than 50.</exception>
     // retail: CMotionTable::UnPack (acclient.c:338603)
-    internal static MotionTable UnPack(ReadOnlySpan<byte> entry)
+    public static MotionTable UnPack(ReadOnlySpan<byte> entry)
     {
         var r = new RetailDataReader(entry, "CMotionTable");
         var t = new MotionTable();
@@ -31,7 +33,7 @@ internal sealed partial class MotionTable
             throw r.Error($"a motion table needs at least 12 bytes after its id, {r.Remaining} remain");
         }
 
-        t.DefaultStyle = r.ReadUInt32("default_style");
+        t._defaultStyle = r.ReadUInt32("default_style");
         int n = r.ReadCount("style_defaults", 8);
         for (int i = 0; i < n; i++)
         {

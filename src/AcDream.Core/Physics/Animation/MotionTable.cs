@@ -14,27 +14,63 @@ namespace AcDream.Core.Physics.Animation;
 /// with the same keys. Retail inserts at the head of a bucket, so of two entries with one key the later one is found; the
 /// unpacker's dictionary keeps the later one too. Read-only after <see cref="UnPack"/>: many objects may share one table.
 /// </remarks>
-internal sealed partial class MotionTable
+public sealed partial class MotionTable
 {
-    /// <summary>The data file id (retail <c>DBObj::m_DID</c>), 0 for a table built in code.</summary>
-    public uint Id;
+    /// <summary>The data file id (retail <c>DBObj::m_DID</c>): the entry's first dword.</summary>
+    public uint Id { get; private set; }
 
-    /// <summary>The style a new object starts in (retail <c>default_style</c>).</summary>
-    public uint DefaultStyle;
+    /// <summary>The style a new object starts in (retail <c>CMotionTable::default_style</c>).</summary>
+    public Motion.MotionCommand DefaultStyle => (Motion.MotionCommand)_defaultStyle;
+
+    // retail: default_style
+    private uint _defaultStyle;
+
+    /// <summary>Number of styles with a default substate (retail <c>style_defaults</c>).</summary>
+    public int StyleCount => StyleDefaults.Count;
+
+    /// <summary>Number of cycles (retail <c>cycles</c>).</summary>
+    public int CycleCount => Cycles.Count;
+
+    /// <summary>Number of modifiers (retail <c>modifiers</c>).</summary>
+    public int ModifierCount => Modifiers.Count;
+
+    /// <summary>Number of links, counted over every starting motion (retail <c>links</c>).</summary>
+    public int LinkCount
+    {
+        get
+        {
+            int n = 0;
+            foreach (Dictionary<uint, MotionData> inner in Links.Values)
+            {
+                n += inner.Count;
+            }
+
+            return n;
+        }
+    }
+
+    /// <summary>The default substate of <paramref name="style"/> (retail's <c>style_defaults</c> lookup).</summary>
+    /// <returns>False when the table has no default for the style.</returns>
+    public bool TryGetDefaultSubstate(Motion.MotionCommand style, out Motion.MotionCommand substate)
+    {
+        bool found = StyleDefaults.TryGetValue((uint)style, out uint s);
+        substate = (Motion.MotionCommand)s;
+        return found;
+    }
 
     /// <summary>Each style's default substate (retail <c>style_defaults</c>).</summary>
-    public readonly Dictionary<uint, uint> StyleDefaults = new();
+    internal readonly Dictionary<uint, uint> StyleDefaults = new();
 
     /// <summary>The cycles, keyed <c>(style &lt;&lt; 16) | (substate &amp; 0xFFFFFF)</c> (retail <c>cycles</c>).</summary>
-    public readonly Dictionary<uint, MotionData> Cycles = new();
+    internal readonly Dictionary<uint, MotionData> Cycles = new();
 
     /// <summary>The modifiers, keyed <c>(style &lt;&lt; 16) | (modifier &amp; 0xFFFFFF)</c> or the bare
     /// <c>modifier &amp; 0xFFFFFF</c> for every style (retail <c>modifiers</c>).</summary>
-    public readonly Dictionary<uint, MotionData> Modifiers = new();
+    internal readonly Dictionary<uint, MotionData> Modifiers = new();
 
     /// <summary>The links: outer key <c>(style &lt;&lt; 16) | (from &amp; 0xFFFFFF)</c>, inner key the motion they lead to
     /// (retail <c>links</c>).</summary>
-    public readonly Dictionary<uint, Dictionary<uint, MotionData>> Links = new();
+    internal readonly Dictionary<uint, Dictionary<uint, MotionData>> Links = new();
 
     private bool TryStyleDefault(uint style, out uint substate) => StyleDefaults.TryGetValue(style, out substate);
 
