@@ -1,0 +1,110 @@
+using System;
+using AcDream.Core.Physics.Data;
+
+namespace AcDream.Core.Physics.Animation;
+
+/// <summary>
+/// An animation read from a data file entry (type 0x03; retail <c>CAnimation</c>, CAnim.c): per frame, each part's frame
+/// and the frame's hooks, and optionally a root-motion step per frame (<see cref="PosFrames"/>) that a playing
+/// <see cref="AnimSequence"/> applies to the object as it crosses the frame. Immutable; one instance is shared by every
+/// object that plays it.
+/// </summary>
+public sealed class AnimClip
+{
+    private readonly AFrame[]? _posFrames;
+    private readonly AnimFrame[] _partFrames;
+
+    // retail: CAnimation::CAnimation (acclient.c:333676)
+    internal AnimClip(uint id, int numParts, AFrame[]? posFrames, AnimFrame[] partFrames, bool hasHooks)
+    {
+        Id = id;
+        NumParts = numParts;
+        _posFrames = posFrames;
+        _partFrames = partFrames;
+        HasHooks = hasHooks;
+    }
+
+    /// <summary>The animation's data id (the entry's first word, retail <c>m_DID</c>).</summary>
+    public uint Id { get; }
+
+    /// <summary>Number of parts each frame moves (retail <c>num_parts</c>).</summary>
+    public int NumParts { get; }
+
+    /// <summary>Number of frames (retail <c>num_frames</c>).</summary>
+    public int NumFrames => _partFrames.Length;
+
+    /// <summary>The data's "has hooks" flag (bit 1 of the entry's flags; retail <c>has_hooks</c>).</summary>
+    public bool HasHooks { get; }
+
+    /// <summary>True when the animation carries a root-motion step per frame (retail <c>pos_frames</c> not null).</summary>
+    public bool HasPosFrames => _posFrames is not null;
+
+    /// <summary>The root-motion step of each frame (empty when <see cref="HasPosFrames"/> is false).</summary>
+    public ReadOnlySpan<AFrame> PosFrames => _posFrames;
+
+    /// <summary>Each frame's part frames and hooks (retail <c>part_frames</c>).</summary>
+    public ReadOnlySpan<AnimFrame> PartFrames => _partFrames;
+
+    internal AFrame[]? PosFramesArray => _posFrames;
+
+    internal AnimFrame[] PartFramesArray => _partFrames;
+
+    /// <summary>
+    /// Reads an animation from a data-file entry's bytes (after the dat container): the entry's data id, then retail
+    /// <c>CAnimation::UnPack</c>: flags (bit 0: root-motion frames present, bit 1: has hooks), the part count, the frame
+    /// count, the root-motion frames when present, then each frame's part frames and hooks.
+    /// </summary>
+    /// <param name="entry">The entry's bytes. Bytes after the animation are ignored, as retail ignores them.</param>
+    /// <exception cref="RetailDataFormatException">Truncated or inconsistent bytes: a count larger than the bytes left, a frame
+    /// that is not finite or not a unit quaternion, an unknown hook type, a hook value outside its domain. Nothing is returned
+    /// half-built.</exception>
+    public static AnimClip UnPack(ReadOnlySpan<byte> entry)
+    {
+        var reader = new RetailDataReader(entry, "CAnimation");
+        uint id = reader.ReadUInt32("CAnimation id");
+        return UnPack(ref reader, id);
+    }
+
+    // retail: CAnimation::UnPack (acclient.c:334085)
+    internal static AnimClip UnPack(ref RetailDataReader reader, uint id)
+    {
+        uint flags = reader.ReadUInt32("CAnimation flags");
+        uint numPartsWord = reader.ReadUInt32("CAnimation num_parts");
+        int countAt = reader.Offset;
+        uint numFramesWord = reader.ReadUInt32("CAnimation num_frames");
+        bool hasPos = (flags & 1) != 0;
+
+        // Every frame needs at least its part frames (28 bytes each) and its hook count; with root motion, 28 bytes more.
+        long perFrame = 4L + 28L * numPartsWord + (hasPos ? 28L : 0L);
+        if (numFramesWord != 0 && (long)numFramesWord * perFrame > reader.Remaining)
+        {
+            throw reader.ErrorAt(countAt, $"CAnimation num_frames {numFramesWord} × {perFrame} bytes exceeds the {reader.Remaining} bytes left");
+        }
+
+        if (numPartsWord > int.MaxValue)
+        {
+            throw reader.ErrorAt(countAt - 4, $"CAnimation num_parts {numPartsWord} is not a count");
+        }
+
+        int numParts = (int)numPartsWord;
+        int numFrames = (int)numFramesWord;
+        AFrame[]? posFrames = null;
+        if (hasPos)
+        {
+            posFrames = numFrames == 0 ? Array.Empty<AFrame>() : new AFrame[numFrames];
+            for (int i = 0; i < numFrames; i++)
+            {
+                posFrames[i] = AFrame.Read(ref reader, "CAnimation pos_frame");
+            }
+        }
+
+        bool hasHooks = ((flags >> 1) & 1) != 0;
+        AnimFrame[] partFrames = numFrames == 0 ? Array.Empty<AnimFrame>() : new AnimFrame[numFrames];
+        for (int i = 0; i < numFrames; i++)
+        {
+            partFrames[i] = AnimFrame.UnPack(ref reader, numParts);
+        }
+
+        return new AnimClip(id, numParts, posFrames, partFrames, hasHooks);
+    }
+}

@@ -1,0 +1,390 @@
+using System.Numerics;
+using AcDream.Core.Physics.Data;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Spatial;
+
+namespace AcDream.Core.Physics.Animation;
+
+// The hooks the library runs itself (retail: their Execute calls CPhysicsObj's own setters). Each float they hand to a
+// setter is read finite (a scale also within InputLimits' scale domain), so that the setter, which refuses such values,
+// never throws from inside a tick.
+
+/// <summary>Fades the object's translucency from <see cref="Start"/> to <see cref="End"/> over <see cref="Time"/> seconds
+/// (retail <c>TransparentHook</c>: <c>CPhysicsObj::SetTranslucency2</c>).</summary>
+public sealed class TransparentHook : AnimHook
+{
+    internal TransparentHook()
+    {
+    }
+
+    /// <inheritdoc />
+    // TransparentHook::GetType returns 20.
+    // retail: TransparentHook::GetType (acclient.c:665892)
+    public override AnimHookType HookType => AnimHookType.Transparent;
+
+    /// <summary>Translucency at the start of the fade.</summary>
+    public float Start { get; private set; }
+
+    /// <summary>Translucency at the end of the fade.</summary>
+    public float End { get; private set; }
+
+    /// <summary>Duration of the fade, seconds.</summary>
+    public float Time { get; private set; }
+
+    private protected override int BodySize => 12;
+
+    /// <inheritdoc />
+    // retail: TransparentHook::Execute (acclient.c:342341)
+    public override void Execute(PhysicsObj obj) => obj.SetTranslucency2(Start, End, Time);
+
+    // Folded by the linker with TransparentHook's, LuminousHook's, DiffuseHook's and TextureVelocityPartHook's UnPack:
+    // three 32-bit words.
+    // retail: LuminousHook::UnPack (acclient.c:342371)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        Start = ReadFinite(ref reader, "TransparentHook start");
+        End = ReadFinite(ref reader, "TransparentHook end");
+        Time = ReadFinite(ref reader, "TransparentHook time");
+    }
+}
+
+/// <summary>Fades one part's translucency (retail <c>TransparentPartHook</c>: <c>CPhysicsObj::SetPartTranslucency</c>).</summary>
+public sealed class TransparentPartHook : AnimHook
+{
+    internal TransparentPartHook()
+    {
+    }
+
+    /// <inheritdoc />
+    public override AnimHookType HookType => AnimHookType.TransparentPart;
+
+    /// <summary>The part's index.</summary>
+    public uint Part { get; private set; }
+
+    /// <summary>Translucency at the start of the fade.</summary>
+    public float Start { get; private set; }
+
+    /// <summary>Translucency at the end of the fade.</summary>
+    public float End { get; private set; }
+
+    /// <summary>Duration of the fade, seconds.</summary>
+    public float Time { get; private set; }
+
+    private protected override int BodySize => 16;
+
+    /// <inheritdoc />
+    // retail: TransparentPartHook::Execute (acclient.c:342388)
+    public override void Execute(PhysicsObj obj) => obj.SetPartTranslucency(Part, Start, End, Time);
+
+    // retail: TransparentPartHook::UnPack (acclient.c:342394)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        Part = reader.ReadUInt32("TransparentPartHook part");
+        Start = ReadFinite(ref reader, "TransparentPartHook start");
+        End = ReadFinite(ref reader, "TransparentPartHook end");
+        Time = ReadFinite(ref reader, "TransparentPartHook time");
+    }
+}
+
+/// <summary>Fades the object's luminosity (retail <c>LuminousHook</c>: <c>CPhysicsObj::SetLuminosity</c>).</summary>
+public sealed class LuminousHook : AnimHook
+{
+    internal LuminousHook()
+    {
+    }
+
+    /// <inheritdoc />
+    public override AnimHookType HookType => AnimHookType.Luminous;
+
+    /// <summary>Luminosity at the start of the fade.</summary>
+    public float Start { get; private set; }
+
+    /// <summary>Luminosity at the end of the fade.</summary>
+    public float End { get; private set; }
+
+    /// <summary>Duration of the fade, seconds.</summary>
+    public float Time { get; private set; }
+
+    private protected override int BodySize => 12;
+
+    /// <inheritdoc />
+    // retail: LuminousHook::Execute (acclient.c:342421)
+    public override void Execute(PhysicsObj obj) => obj.SetLuminosity(Start, End, Time);
+
+    // retail: LuminousHook::UnPack (acclient.c:342371)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        Start = ReadFinite(ref reader, "LuminousHook start");
+        End = ReadFinite(ref reader, "LuminousHook end");
+        Time = ReadFinite(ref reader, "LuminousHook time");
+    }
+}
+
+/// <summary>Fades one part's luminosity (retail <c>LuminousPartHook</c>: <c>CPhysicsObj::SetPartLuminosity</c>).</summary>
+public sealed class LuminousPartHook : AnimHook
+{
+    internal LuminousPartHook()
+    {
+    }
+
+    /// <inheritdoc />
+    // retail: LuminousPartHook::GetType (acclient.c:342053)
+    public override AnimHookType HookType => AnimHookType.LuminousPart;
+
+    /// <summary>The part's index.</summary>
+    public uint Part { get; private set; }
+
+    /// <summary>Luminosity at the start of the fade.</summary>
+    public float Start { get; private set; }
+
+    /// <summary>Luminosity at the end of the fade.</summary>
+    public float End { get; private set; }
+
+    /// <summary>Duration of the fade, seconds.</summary>
+    public float Time { get; private set; }
+
+    private protected override int BodySize => 16;
+
+    /// <inheritdoc />
+    // retail: LuminousPartHook::Execute (acclient.c:342415)
+    public override void Execute(PhysicsObj obj) => obj.SetPartLuminosity(Part, Start, End, Time);
+
+    // Folded with TransparentPartHook::UnPack: part, start, end, time.
+    // retail: TransparentPartHook::UnPack (acclient.c:342394)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        Part = reader.ReadUInt32("LuminousPartHook part");
+        Start = ReadFinite(ref reader, "LuminousPartHook start");
+        End = ReadFinite(ref reader, "LuminousPartHook end");
+        Time = ReadFinite(ref reader, "LuminousPartHook time");
+    }
+}
+
+/// <summary>Fades the object's diffusion (retail <c>DiffuseHook</c>: <c>CPhysicsObj::SetDiffusion</c>).</summary>
+public sealed class DiffuseHook : AnimHook
+{
+    internal DiffuseHook()
+    {
+    }
+
+    /// <inheritdoc />
+    public override AnimHookType HookType => AnimHookType.Diffuse;
+
+    /// <summary>Diffusion at the start of the fade.</summary>
+    public float Start { get; private set; }
+
+    /// <summary>Diffusion at the end of the fade.</summary>
+    public float End { get; private set; }
+
+    /// <summary>Duration of the fade, seconds.</summary>
+    public float Time { get; private set; }
+
+    private protected override int BodySize => 12;
+
+    /// <inheritdoc />
+    // retail: DiffuseHook::Execute (acclient.c:342461)
+    public override void Execute(PhysicsObj obj) => obj.SetDiffusion(Start, End, Time);
+
+    // Folded with LuminousHook::UnPack: three 32-bit words.
+    // retail: LuminousHook::UnPack (acclient.c:342371)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        Start = ReadFinite(ref reader, "DiffuseHook start");
+        End = ReadFinite(ref reader, "DiffuseHook end");
+        Time = ReadFinite(ref reader, "DiffuseHook time");
+    }
+}
+
+/// <summary>Fades one part's diffusion (retail <c>DiffusePartHook</c>: <c>CPhysicsObj::SetPartDiffusion</c>).</summary>
+public sealed class DiffusePartHook : AnimHook
+{
+    internal DiffusePartHook()
+    {
+    }
+
+    /// <inheritdoc />
+    public override AnimHookType HookType => AnimHookType.DiffusePart;
+
+    /// <summary>The part's index.</summary>
+    public uint Part { get; private set; }
+
+    /// <summary>Diffusion at the start of the fade.</summary>
+    public float Start { get; private set; }
+
+    /// <summary>Diffusion at the end of the fade.</summary>
+    public float End { get; private set; }
+
+    /// <summary>Duration of the fade, seconds.</summary>
+    public float Time { get; private set; }
+
+    private protected override int BodySize => 16;
+
+    /// <inheritdoc />
+    // retail: DiffusePartHook::Execute (acclient.c:342427)
+    public override void Execute(PhysicsObj obj) => obj.SetPartDiffusion(Part, Start, End, Time);
+
+    // Folded with TransparentPartHook::UnPack: part, start, end, time.
+    // retail: TransparentPartHook::UnPack (acclient.c:342394)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        Part = reader.ReadUInt32("DiffusePartHook part");
+        Start = ReadFinite(ref reader, "DiffusePartHook start");
+        End = ReadFinite(ref reader, "DiffusePartHook end");
+        Time = ReadFinite(ref reader, "DiffusePartHook time");
+    }
+}
+
+/// <summary>Scales the object to <see cref="End"/> over <see cref="Time"/> seconds (retail <c>ScaleHook</c>:
+/// <c>CPhysicsObj::SetScale</c>).</summary>
+public sealed class ScaleHook : AnimHook
+{
+    internal ScaleHook()
+    {
+    }
+
+    /// <inheritdoc />
+    // ScaleHook::GetType returns 12, folded with UIElement_Text::GetUIElementType.
+    // retail: UIElement_Text::GetUIElementType (acclient.c:713841)
+    public override AnimHookType HookType => AnimHookType.Scale;
+
+    /// <summary>The scale at the end, in [0.01, 100].</summary>
+    public float End { get; private set; }
+
+    /// <summary>Duration, seconds (below EPSILON: at once).</summary>
+    public float Time { get; private set; }
+
+    private protected override int BodySize => 8;
+
+    /// <inheritdoc />
+    // retail: ScaleHook::Execute (acclient.c:342473)
+    public override void Execute(PhysicsObj obj) => obj.SetScale(End, Time);
+
+    // retail: ScaleHook::UnPack (acclient.c:342499)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        int at = reader.Offset;
+        float end = ReadFinite(ref reader, "ScaleHook end");
+        // non-retail: the scale's domain, as PhysicsObj.SetScale refuses a scale outside it
+        if (end < InputLimits.MinScale || end > InputLimits.MaxScale)
+        {
+            throw reader.ErrorAt(at, $"ScaleHook end {end} is outside [{InputLimits.MinScale}, {InputLimits.MaxScale}]");
+        }
+
+        End = end;
+        Time = ReadFinite(ref reader, "ScaleHook time");
+    }
+}
+
+/// <summary>Plays physics script <see cref="ScriptId"/> after a random pause up to <see cref="Pause"/> seconds (retail
+/// <c>CallPESHook</c>: <c>CPhysicsObj::CallPES</c>).</summary>
+public sealed class CallPesHook : AnimHook
+{
+    internal CallPesHook()
+    {
+    }
+
+    /// <inheritdoc />
+    // retail: CallPESHook::GetType (acclient.c:342730)
+    public override AnimHookType HookType => AnimHookType.CallPes;
+
+    /// <summary>The physics script's data id (retail <c>pes</c>).</summary>
+    public uint ScriptId { get; private set; }
+
+    /// <summary>The longest random pause before it plays, seconds (retail <c>pause</c>).</summary>
+    public float Pause { get; private set; }
+
+    private protected override int BodySize => 8;
+
+    /// <inheritdoc />
+    // retail: CallPESHook::Execute (acclient.c:342467)
+    public override void Execute(PhysicsObj obj) => obj.CallPes(ScriptId, Pause);
+
+    // retail: CallPESHook::UnPack (acclient.c:343176)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        ScriptId = reader.ReadUInt32("CallPESHook pes");
+        Pause = ReadFinite(ref reader, "CallPESHook pause");
+    }
+}
+
+/// <summary>Makes the object ethereal or tries to make it solid (retail <c>EtherealHook</c>: <c>CPhysicsObj::set_ethereal</c>).</summary>
+public sealed class EtherealHook : AnimHook
+{
+    internal EtherealHook()
+    {
+    }
+
+    /// <inheritdoc />
+    public override AnimHookType HookType => AnimHookType.Ethereal;
+
+    /// <summary>True to make the object ethereal (retail <c>ethereal</c>, non-zero).</summary>
+    public bool Ethereal { get; private set; }
+
+    private protected override int BodySize => 4;
+
+    /// <inheritdoc />
+    // retail: EtherealHook::Execute (acclient.c:342311)
+    public override void Execute(PhysicsObj obj) => obj.SetEthereal(Ethereal);
+
+    // Folded with the other one-word hooks' UnPack.
+    // retail: DestroyParticleHook::UnPack (acclient.c:342303)
+    private protected override void UnPackBody(ref RetailDataReader reader) =>
+        Ethereal = reader.ReadInt32("EtherealHook ethereal") != 0;
+}
+
+/// <summary>Sets the object's angular velocity, rad/s in world axes (retail <c>SetOmegaHook</c>:
+/// <c>CPhysicsObj::set_omega</c>).</summary>
+public sealed class SetOmegaHook : AnimHook
+{
+    internal SetOmegaHook()
+    {
+    }
+
+    /// <inheritdoc />
+    // SetOmegaHook::GetType returns 22, folded with MenuDialog::GetUIElementType.
+    // retail: MenuDialog::GetUIElementType (acclient.c:662530)
+    public override AnimHookType HookType => AnimHookType.SetOmega;
+
+    /// <summary>The angular velocity set (retail <c>axis</c>).</summary>
+    public Vector3 Axis { get; private set; }
+
+    private protected override int BodySize => 12;
+
+    /// <inheritdoc />
+    // retail: SetOmegaHook::Execute (acclient.c:342547)
+    public override void Execute(PhysicsObj obj) => obj.SetOmega(Axis);
+
+    // Retail reads the axis only when its size argument is at least 12; the library always reads it (a short entry is a
+    // format error).
+    // retail: SetOmegaHook::UnPack (acclient.c:343254)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        float x = ReadFinite(ref reader, "SetOmegaHook axis");
+        float y = ReadFinite(ref reader, "SetOmegaHook axis");
+        float z = ReadFinite(ref reader, "SetOmegaHook axis");
+        Axis = new Vector3(x, y, z);
+    }
+}
+
+/// <summary>An animation of the sequence ended while link animations were queued (retail <c>AnimDoneHook</c>, fired by
+/// <c>CSequence::update_internal</c>): the object's part array is told (<c>CPhysicsObj::Hook_AnimDone</c>). Never read from
+/// data.</summary>
+public sealed class AnimDoneHook : AnimHook
+{
+    internal AnimDoneHook()
+    {
+    }
+
+    /// <inheritdoc />
+    public override AnimHookType HookType => AnimHookType.AnimDone;
+
+    private protected override int BodySize => 0;
+
+    /// <inheritdoc />
+    // retail: AnimDoneHook::Execute (acclient.c:342335)
+    public override void Execute(PhysicsObj obj) => obj.HookAnimDone();
+
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+    }
+}
