@@ -83,7 +83,7 @@ public sealed partial class AnimSequence
                 {
                     if (hasFrame)
                     {
-                        if (curr.Anim!.HasPosFrames && curr.TryGetPosFrame(lastFrame, out AFrame pos))
+                        if (curr.TryGetPosFrame(lastFrame, out AFrame pos))
                         {
                             AFrame.Combine(ref retval, pos);
                         }
@@ -121,7 +121,7 @@ public sealed partial class AnimSequence
                 {
                     if (hasFrame)
                     {
-                        if (curr.Anim!.HasPosFrames && curr.TryGetPosFrame(lastFrame, out AFrame pos))
+                        if (curr.TryGetPosFrame(lastFrame, out AFrame pos))
                         {
                             AFrame.Subtract1(ref retval, pos);
                         }
@@ -179,7 +179,7 @@ public sealed partial class AnimSequence
         {
             if (curr.GetFramerate() >= 0.0 && hasFrame)
             {
-                if (curr.Anim!.HasPosFrames && curr.TryGetPosFrame(frameNumber, out AFrame pos))
+                if (curr.TryGetPosFrame(frameNumber, out AFrame pos))
                 {
                     AFrame.Subtract1(ref retval, pos);
                 }
@@ -195,7 +195,7 @@ public sealed partial class AnimSequence
             frameNumber = curr.GetEndingFrame();
             if (curr.GetFramerate() < 0.0 && hasFrame)
             {
-                if (curr.Anim!.HasPosFrames && curr.TryGetPosFrame(frameNumber, out AFrame pos))
+                if (curr.TryGetPosFrame(frameNumber, out AFrame pos))
                 {
                     AFrame.Combine(ref retval, pos);
                 }
@@ -210,7 +210,7 @@ public sealed partial class AnimSequence
         {
             if (curr.GetFramerate() < 0.0 && hasFrame)
             {
-                if (curr.Anim!.HasPosFrames && curr.TryGetPosFrame(frameNumber, out AFrame pos))
+                if (curr.TryGetPosFrame(frameNumber, out AFrame pos))
                 {
                     AFrame.Subtract1(ref retval, pos);
                 }
@@ -226,7 +226,7 @@ public sealed partial class AnimSequence
             frameNumber = curr.GetStartingFrame();
             if (curr.GetFramerate() > 0.0 && hasFrame)
             {
-                if (curr.Anim!.HasPosFrames && curr.TryGetPosFrame(frameNumber, out AFrame pos))
+                if (curr.TryGetPosFrame(frameNumber, out AFrame pos))
                 {
                     AFrame.Combine(ref retval, pos);
                 }

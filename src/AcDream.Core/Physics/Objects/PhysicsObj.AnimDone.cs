@@ -1,4 +1,6 @@
+using System;
 using AcDream.Core.Physics.Animation;
+using AcDream.Core.Physics.Hooks;
 
 namespace AcDream.Core.Physics.Objects;
 
@@ -13,4 +15,7 @@ public sealed partial class PhysicsObj
             target.AnimationDone(true);
         }
     }
+
+    /// <summary>The anim hooks waiting for the next <c>process_hooks</c>, in queue order (for tests and diagnostics).</summary>
+    internal ReadOnlySpan<IAnimHook?> PendingAnimHooks => _animHooks.AsSpan(0, _animHookCount);
 }
