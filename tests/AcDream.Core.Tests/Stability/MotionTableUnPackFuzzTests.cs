@@ -55,7 +55,11 @@ public class MotionTableUnPackFuzzTests
                 switch (kind)
                 {
                     case 0:
-                        b[at] = (byte)value;
+                        if (at < b.Length)
+                        {
+                            b[at] = (byte)value;
+                        }
+
                         break;
                     case 1:
                         b = b.AsSpan(0, Math.Min(cut, b.Length)).ToArray();
