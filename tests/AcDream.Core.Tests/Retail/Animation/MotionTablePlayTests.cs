@@ -7,6 +7,7 @@ using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;
+
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
@@ -290,5 +291,70 @@ public class MotionTablePlayTests
         Assert.Equal(new Vector3(0f, 4f, 0f), player.Velocity);
         Assert.Equal(-3f, player.Omega.Z);
         Assert.Equal(2, player.ModifierCount);
+    }
+
+    // The object with the retail movement manager and interpreter, in a cell of a flat world (an object without a cell
+    // drops its link animations after each motion: CMotionInterp::DoInterpretedMotion's cell check), gravity off (every
+    // motion may start). The steps are driven by hand, not by the world's tick.
+    private static (PhysicsObj Obj, AnimatedPartArray Parts, MovementManager Mm, MotionInterp Mi) WithInterpreter()
+    {
+        var terrain = SweepScene.Terrain();
+        SweepScene.AddBlock(terrain, SweepScene.BlockX, SweepScene.BlockY, (_, _) => 20);
+        PhysicsWorld world = SweepScene.Physics(terrain, out _);
+        PhysicsObj obj = world.CreateObject(1);
+        obj.Weenie = new FixedRateWeenie(1f);
+        var setup = new SetupPhysics(new[] { new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f) }, ReadOnlySpan<CylSphere>.Empty, 0.5f, 1f, 0.6f, 0.6f);
+        var parts = new AnimatedPartArray(setup, 1, Table(), Clips());
+        obj.PartArray = parts;
+        obj.SetState((PhysicsState)PhysicsGlobals.DefaultState & ~PhysicsState.Gravity);
+        Assert.True(obj.EnterWorld(new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 4), new Vector3(100f, 100f, 20f))));
+        MovementManager mm = MovementManager.Of(obj);
+        return (obj, parts, mm, mm.GetOrCreateMotionInterpreter());
+    }
+
+    private static void Steps(PhysicsObj obj, AnimatedPartArray parts, int n)
+    {
+        for (int i = 0; i < n; i++)
+        {
+            Frame f = Frame.Identity;
+            parts.Update(0.1f, ref f);
+            obj.ProcessHooks();
+        }
+    }
+
+    [Fact]
+    public void SixActionsStillPlaying_TheSeventhIsTooManyActions_0x45()
+    {
+        (PhysicsObj obj, AnimatedPartArray parts, MovementManager mm, MotionInterp mi) = WithInterpreter();
+        // Each wave waits for its link (3 frames) before the interpreter's action count drops; six are accepted.
+        for (int i = 0; i < 6; i++)
+        {
+            Assert.Equal(MotionError.None, mm.DoMotion((MotionCommand)Wave, new MovementParameters()));
+        }
+
+        Assert.Equal(0x45, (int)mm.DoMotion((MotionCommand)Wave, new MovementParameters()));
+        Assert.Equal(6, parts.Player!.ActionCount);
+
+        // The first wave's link ends after 3 steps: one action done, room for one more.
+        Steps(obj, parts, 3);
+        Assert.Equal(MotionError.None, mm.DoMotion((MotionCommand)Wave, new MovementParameters()));
+    }
+
+    [Fact]
+    public void StandingUpFromSitting_CannotJump_0x48_UntilTheStandUpLinkEnds()
+    {
+        (PhysicsObj obj, AnimatedPartArray parts, MovementManager mm, MotionInterp mi) = WithInterpreter();
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.Sitting, new MovementParameters()));
+        Steps(obj, parts, 2);   // the sit-down link: 2 frames
+        Assert.Equal(MotionError.YouCantJumpFromThisPosition, mi.JumpIsAllowed(1f, out _));
+
+        // Ready from Sitting: the interpreter queues it with motion_allows_jump(Sitting) = 0x48 (the forward command it
+        // leaves), and the table plays the Sitting->Ready link (3 frames) before the Ready cycle: num_anims 1.
+        Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.Ready, new MovementParameters()));
+        Assert.Equal(MotionCommand.Ready, mi.InterpretedState.ForwardCommand);
+        Steps(obj, parts, 2);
+        Assert.Equal(0x48, (int)mi.JumpIsAllowed(1f, out _));
+        Steps(obj, parts, 1);   // the stand-up ends: MotionDone takes the Ready off the pending list
+        Assert.Equal(MotionError.None, mi.JumpIsAllowed(1f, out _));
     }
 }
