@@ -60,6 +60,8 @@ public sealed partial class MotionTable
         }
 
         // Retail's last check: the cursor may stand short of a four-byte boundary only with the padding still in the buffer.
+        // Retail's size bookkeeping (PackObj::GET_SIZE_LEFT, acclient.c:341465; PackObj::VERIFY_ADDR, acclient.c:341477)
+        // is the reader's Remaining and its bounds checks.
         int pad = (4 - (r.Offset & 3)) & 3;
         if (pad != 0 && r.Remaining < pad)
         {

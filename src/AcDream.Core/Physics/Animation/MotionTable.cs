@@ -72,6 +72,7 @@ public sealed partial class MotionTable
     /// (retail <c>links</c>).</summary>
     internal readonly Dictionary<uint, Dictionary<uint, MotionData>> Links = new();
 
+    // retail: LongNIValHash<unsigned long>::lookup (acclient.c:304098), on style_defaults
     private bool TryStyleDefault(uint style, out uint substate) => StyleDefaults.TryGetValue(style, out substate);
 
     private MotionData? Cycle(uint key) => Cycles.TryGetValue(key, out MotionData? d) ? d : null;

@@ -53,8 +53,8 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
         NumParts = numParts;
         _spheres = setup.Spheres.ToArray();
         _cylSpheres = setup.CylSpheres.ToArray();
-        Radius = setup.Radius;
-        Height = setup.Height;
+        _setupRadius = setup.Radius;
+        _setupHeight = setup.Height;
         StepUpHeight = setup.StepUpHeight;
         StepDownHeight = setup.StepDownHeight;
         if (motionTable is not null)
@@ -99,6 +99,7 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
     private PhysicsObj? _owner;
 
     /// <inheritdoc />
+    // retail: CPartArray::GetNumSphere (acclient.c:325357)
     public int NumSpheres => _spheres.Length;
 
     /// <inheritdoc />
@@ -117,10 +118,15 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
     public int NumParts { get; }
 
     /// <inheritdoc />
-    public float Radius { get; }
+    // retail: CPartArray::GetRadius (acclient.c:325381): the setup's radius times scale.z
+    public float Radius => (float)((double)_setupRadius * _scale.Z);
 
     /// <inheritdoc />
-    public float Height { get; }
+    // retail: CPartArray::GetHeight (acclient.c:325387): the setup's height times scale.z
+    public float Height => (float)((double)_setupHeight * _scale.Z);
+
+    private readonly float _setupRadius;
+    private readonly float _setupHeight;
 
     /// <inheritdoc />
     public float StepUpHeight { get; }
