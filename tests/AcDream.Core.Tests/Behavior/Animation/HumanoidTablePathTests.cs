@@ -117,28 +117,24 @@ public class HumanoidTablePathTests
     }
 
     [Fact]
-    public void RealTableOnTheAnimatedPartArray_SameVelocitiesAndHeadings_PositionsWithinRetailsFloatTemporaries()
+    public void RealTableOnTheAnimatedPartArray_MovesThePlayerBitForBitAsTheStandIn()
     {
+        // The real path: the sequence plays each cycle's one animation at framerate 0 (a held pose): update_internal crosses
+        // no frame and applies the velocity and omega over the whole quantum (acclient.c:339892), as the stand-in's
+        // SimplePartArray does. apply_physics keeps the y and z displacements in a float temporary before adding them
+        // (AnimSequence.ApplyPhysics), SimplePartArray.Update adds in double and rounds once; the two agree here because
+        // the step's offset frame starts at the identity (origin +0): (float)((float)(s·v) + 0) = (float)(s·v + 0). They
+        // would differ in the last bit after a root-motion frame moved the offset first (real animations).
         List<Step> standIn = Drive(Player(StandIn()));
         List<Step> real = Drive(Player(TableOnAnimatedParts()));
 
         Assert.Equal(standIn.Count, real.Count);
         for (int i = 0; i < standIn.Count; i++)
         {
-            // The sequence's velocity and omega: bit for bit (add_motion / combine_motion products rounded to float as the
-            // stand-in's are).
-            Assert.Equal(standIn[i].V, real[i].V);
-            Assert.Equal(standIn[i].W, real[i].W);
-            // The heading: bit for bit (apply_physics rotates by the same float omega × quantum, Frame::rotate).
-            Assert.Equal(standIn[i].Qw, real[i].Qw);
-            Assert.Equal(standIn[i].Qz, real[i].Qz);
-            // The origin: CSequence::apply_physics (acclient.c:339859) keeps the y and z displacements in a float temporary
-            // before adding them (AnimSequence.ApplyPhysics); SimplePartArray.Update sums s × v + o in double and rounds
-            // once. So y can differ by the rounding of one 0.05 × v product per step: at most half an ulp of 0.475
-            // (2^-25 ≈ 3e-8 m) per step, summed over the 80 steps: under 3e-6 m.
-            Assert.Equal(standIn[i].Origin.X, real[i].Origin.X, 5e-6f);
-            Assert.Equal(standIn[i].Origin.Y, real[i].Origin.Y, 5e-6f);
-            Assert.Equal(standIn[i].Origin.Z, real[i].Origin.Z);
+            Assert.Equal(standIn[i], real[i]);   // origin, quaternion, velocity and omega: every float exactly
         }
+
+        Assert.Equal(0xBFC00000u, BitConverter.SingleToUInt32Bits(real[30].W.Z));  // it turned
+        Assert.Equal(9.5f, real[50].V.Y);                                          // it ran
     }
 }
