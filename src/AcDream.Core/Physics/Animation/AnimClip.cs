@@ -75,8 +75,9 @@ public sealed class AnimClip
         bool hasPos = (flags & 1) != 0;
 
         // Every frame needs at least its part frames (28 bytes each) and its hook count; with root motion, 28 bytes more.
+        // Compared by division: the product of two 32-bit counts can pass any integer type.
         long perFrame = 4L + 28L * numPartsWord + (hasPos ? 28L : 0L);
-        if (numFramesWord != 0 && (long)numFramesWord * perFrame > reader.Remaining)
+        if (numFramesWord != 0 && numFramesWord > reader.Remaining / perFrame)
         {
             throw reader.ErrorAt(countAt, $"CAnimation num_frames {numFramesWord} × {perFrame} bytes exceeds the {reader.Remaining} bytes left");
         }

@@ -1,3 +1,5 @@
+using System;
+using System.Buffers.Binary;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Objects;
@@ -36,6 +38,54 @@ public abstract class AnimHook : IAnimHook
 
     // The hook's own fields' packed size in bytes (retail: the type's pack_size).
     private protected abstract int BodySize { get; }
+
+    // Writes the hook's own fields (retail: the type's Pack) at d[at..], advancing at.
+    private protected abstract void PackBody(Span<byte> d, ref int at);
+
+    /// <summary>
+    /// Writes the hook as <see cref="UnPackHook"/> reads it: type word, direction word, the type's fields, zero padding to a
+    /// multiple of four from the start of <paramref name="destination"/> (retail <c>CAnimHook::PackHook</c> and
+    /// <c>PackObj::ALIGN_PTR</c>); <see cref="PackSize"/> bytes from an offset that is a multiple of four. Too small a
+    /// destination is an <see cref="ArgumentException"/>, before anything is written.
+    /// </summary>
+    // retail: CAnimHook::PackHook (acclient.c:342153)
+    internal void PackHook(Span<byte> destination, ref int offset)
+    {
+        int size = 8 + BodySize;
+        int need = size + ((4 - ((offset + size) & 3)) & 3);
+        if (offset < 0 || destination.Length - offset < need)
+        {
+            throw new ArgumentException($"The hook needs {need} bytes from offset {offset}.", nameof(destination));
+        }
+
+        U32(destination, ref offset, (uint)HookType);
+        U32(destination, ref offset, (uint)(int)Direction);
+        PackBody(destination, ref offset);
+        while ((offset & 3) != 0)
+        {
+            destination[offset++] = 0;
+        }
+    }
+
+    private protected static void U32(Span<byte> d, ref int at, uint v)
+    {
+        BinaryPrimitives.WriteUInt32LittleEndian(d.Slice(at), v);
+        at += 4;
+    }
+
+    private protected static void F32(Span<byte> d, ref int at, float v) => U32(d, ref at, BitConverter.SingleToUInt32Bits(v));
+
+    // Frame::Pack: origin x, y, z, then w, x, y, z.
+    private protected static void FramePack(Span<byte> d, ref int at, in Spatial.Frame f)
+    {
+        F32(d, ref at, f.Origin.X);
+        F32(d, ref at, f.Origin.Y);
+        F32(d, ref at, f.Origin.Z);
+        F32(d, ref at, f.Qw);
+        F32(d, ref at, f.Qx);
+        F32(d, ref at, f.Qy);
+        F32(d, ref at, f.Qz);
+    }
 
     /// <summary>Hands the hook to the world's <see cref="IAnimHookListener"/>, if any (the client-side hooks' Execute).</summary>
     private protected void Notify(PhysicsObj obj) => obj.World.AnimHookListener?.OnAnimHook(obj, this);

@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects;
@@ -32,6 +33,14 @@ public sealed class TransparentHook : AnimHook
     public float Time { get; private set; }
 
     private protected override int BodySize => 12;
+
+    // retail: DiffuseHook::Pack (acclient.c:342347)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        F32(d, ref at, Start);
+        F32(d, ref at, End);
+        F32(d, ref at, Time);
+    }
 
     /// <inheritdoc />
     // retail: TransparentHook::Execute (acclient.c:342341)
@@ -72,6 +81,15 @@ public sealed class TransparentPartHook : AnimHook
 
     private protected override int BodySize => 16;
 
+    // retail: DiffusePartHook::Pack (acclient.c:342433)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        U32(d, ref at, Part);
+        F32(d, ref at, Start);
+        F32(d, ref at, End);
+        F32(d, ref at, Time);
+    }
+
     /// <inheritdoc />
     // retail: TransparentPartHook::Execute (acclient.c:342388)
     public override void Execute(PhysicsObj obj) => obj.SetPartTranslucency(Part, Start, End, Time);
@@ -106,6 +124,14 @@ public sealed class LuminousHook : AnimHook
     public float Time { get; private set; }
 
     private protected override int BodySize => 12;
+
+    // retail: DiffuseHook::Pack (acclient.c:342347)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        F32(d, ref at, Start);
+        F32(d, ref at, End);
+        F32(d, ref at, Time);
+    }
 
     /// <inheritdoc />
     // retail: LuminousHook::Execute (acclient.c:342421)
@@ -145,6 +171,15 @@ public sealed class LuminousPartHook : AnimHook
 
     private protected override int BodySize => 16;
 
+    // retail: DiffusePartHook::Pack (acclient.c:342433)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        U32(d, ref at, Part);
+        F32(d, ref at, Start);
+        F32(d, ref at, End);
+        F32(d, ref at, Time);
+    }
+
     /// <inheritdoc />
     // retail: LuminousPartHook::Execute (acclient.c:342415)
     public override void Execute(PhysicsObj obj) => obj.SetPartLuminosity(Part, Start, End, Time);
@@ -180,6 +215,14 @@ public sealed class DiffuseHook : AnimHook
     public float Time { get; private set; }
 
     private protected override int BodySize => 12;
+
+    // retail: DiffuseHook::Pack (acclient.c:342347)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        F32(d, ref at, Start);
+        F32(d, ref at, End);
+        F32(d, ref at, Time);
+    }
 
     /// <inheritdoc />
     // retail: DiffuseHook::Execute (acclient.c:342461)
@@ -219,6 +262,15 @@ public sealed class DiffusePartHook : AnimHook
 
     private protected override int BodySize => 16;
 
+    // retail: DiffusePartHook::Pack (acclient.c:342433)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        U32(d, ref at, Part);
+        F32(d, ref at, Start);
+        F32(d, ref at, End);
+        F32(d, ref at, Time);
+    }
+
     /// <inheritdoc />
     // retail: DiffusePartHook::Execute (acclient.c:342427)
     public override void Execute(PhysicsObj obj) => obj.SetPartDiffusion(Part, Start, End, Time);
@@ -254,6 +306,13 @@ public sealed class ScaleHook : AnimHook
     public float Time { get; private set; }
 
     private protected override int BodySize => 8;
+
+    // retail: TextureVelocityHook::Pack (acclient.c:342479)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        F32(d, ref at, End);
+        F32(d, ref at, Time);
+    }
 
     /// <inheritdoc />
     // retail: ScaleHook::Execute (acclient.c:342473)
@@ -295,6 +354,13 @@ public sealed class CallPesHook : AnimHook
 
     private protected override int BodySize => 8;
 
+    // retail: CallPESHook::Pack (acclient.c:343156)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        U32(d, ref at, ScriptId);
+        F32(d, ref at, Pause);
+    }
+
     /// <inheritdoc />
     // retail: CallPESHook::Execute (acclient.c:342467)
     public override void Execute(PhysicsObj obj) => obj.CallPes(ScriptId, Pause);
@@ -321,6 +387,12 @@ public sealed class EtherealHook : AnimHook
     public bool Ethereal { get; private set; }
 
     private protected override int BodySize => 4;
+
+    // retail: NoDrawHook::Pack (acclient.c:342287)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        U32(d, ref at, Ethereal ? 1u : 0u);
+    }
 
     /// <inheritdoc />
     // retail: EtherealHook::Execute (acclient.c:342311)
@@ -349,6 +421,14 @@ public sealed class SetOmegaHook : AnimHook
     public Vector3 Axis { get; private set; }
 
     private protected override int BodySize => 12;
+
+    // retail: SetOmegaHook::Pack (acclient.c:343230)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        F32(d, ref at, Axis.X);
+        F32(d, ref at, Axis.Y);
+        F32(d, ref at, Axis.Z);
+    }
 
     /// <inheritdoc />
     // retail: SetOmegaHook::Execute (acclient.c:342547)
@@ -379,6 +459,10 @@ public sealed class AnimDoneHook : AnimHook
     public override AnimHookType HookType => AnimHookType.AnimDone;
 
     private protected override int BodySize => 0;
+
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+    }
 
     /// <inheritdoc />
     // retail: AnimDoneHook::Execute (acclient.c:342335)

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Data;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Animation;
 
@@ -13,7 +14,7 @@ public sealed partial class AnimSequence
     /// follows, 2: omega follows) and those vectors. The placement frame itself is cleared, as retail clears it.
     /// </summary>
     /// <exception cref="RetailDataFormatException">Truncated; an index past the animations; a framerate outside the domain; a
-    /// frame number outside the playing animation's range or a velocity or omega not finite. The sequence is unchanged.</exception>
+    /// frame number outside the playing animation's range; a velocity or omega not finite, or a velocity above 50 m/s. The sequence is unchanged.</exception>
     // retail: CSequence::UnPack (acclient.c:340782)
     internal void UnPack(ReadOnlySpan<byte> data)
     {
@@ -58,7 +59,14 @@ public sealed partial class AnimSequence
         Vector3 velocity = Vector3.Zero, omega = Vector3.Zero;
         if ((bits & 1) != 0)
         {
+            int at = reader.Offset;
             velocity = ReadFiniteVector(ref reader, "CSequence velocity");
+            // non-retail: the sequence velocity's domain, as SimplePartArray.SequenceVelocity's (50 m/s)
+            if ((double)velocity.X * velocity.X + (double)velocity.Y * velocity.Y + (double)velocity.Z * velocity.Z
+                > (double)InputLimits.MaxSequenceSpeed * InputLimits.MaxSequenceSpeed)
+            {
+                throw reader.ErrorAt(at, "CSequence velocity exceeds 50 m/s");
+            }
         }
 
         if ((bits & 2) != 0)

@@ -12,8 +12,7 @@ public interface IAnimHookListener
     /// <summary>
     /// <paramref name="hook"/> fired on <paramref name="obj"/> (in the object's <c>process_hooks</c>, in the order the sequence
     /// crossed the frames). Switch on <see cref="AnimHook.HookType"/> and read the hook's properties. Called inside the tick:
-    /// must not allocate, and must not keep the hook beyond the call if it mutates nothing (hooks belong to their
-    /// animation and are shared by every object playing it).
+    /// must not allocate. The hook is immutable and belongs to its animation (every object playing it shares it).
     /// </summary>
     void OnAnimHook(PhysicsObj obj, AnimHook hook);
 }
