@@ -263,6 +263,28 @@ public class MotionTablePlayTests
     }
 
     [Fact]
+    public void WalkingBackwards_PlaysTheWalkToReadyLinkBackwards()
+    {
+        (PhysicsObj obj, AnimatedPartArray parts, MotionTablePlayer player, Recorder rec) = Create();
+        // WalkForward at -0.65 from Ready (get_link, acclient.c:337584): the direct lookup with a negative speed finds
+        // links[Walk][Ready] but the signs differ (same_sign(-0.65, 1) is false), so GetObjectSequence goes through the
+        // default substate: get_link(Ready -> Ready) = none, get_link(Ready -> Walk, -0.65) = links[Walk][Ready], the
+        // Walk->Ready link at -0.65 × 10 = -6.5 frames per second (backwards), then the walk cycle at -6.5;
+        // num_anims = 0 + 1 + 1 - 1 = 1.
+        Assert.Equal(MotionError.None, player.DoInterpretedMotion((MotionCommand)Walk, P(-0.65f)));
+        Assert.Equal(WalkToReadyClip, parts.Sequence.CurrentAnimation!.Id);
+        Assert.Equal(0xC0D00000u, BitConverter.SingleToUInt32Bits(parts.Sequence.CurrAnim!.GetFramerate()));  // -6.5
+        Assert.Equal((float)(-0.65f * (double)3.12f), player.Velocity.Y);
+        Assert.Equal(2, parts.Sequence.AnimationCount);
+        Assert.Equal(-0.65f, player.SubstateSpeed);
+        // The link's two frames backwards at 6.5 fps: 2 / 6.5 = 0.31 s, so it ends in the fourth 0.1 s step.
+        Steps(obj, parts, rec, 3);
+        Assert.Empty(rec.Done);
+        Steps(obj, parts, rec, 1);
+        Assert.Equal(new[] { ((MotionCommand)Walk, true, 4) }, rec.Done);
+    }
+
+    [Fact]
     public void AMotionTheTableHasNothingFor_IsNoMotionTableData_0x43()
     {
         (_, _, MotionTablePlayer player, _) = Create();
