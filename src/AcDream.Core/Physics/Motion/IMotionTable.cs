@@ -36,6 +36,14 @@ public interface IMotionTable
     // retail seam: CPartArray::HandleEnterWorld (acclient.c:325115), which CPhysicsObj::RemoveLinkAnimations calls
     void RemoveLinkAnimations();
 
+    /// <summary>Reports done the started motions that wait for no animation (called before the finished motions are taken
+    /// with <see cref="TryTakeCompletedMotion"/>). Does nothing by default: a table that completes each motion at once
+    /// (such as <see cref="RetailSpeedMotionTable"/>) has nothing to check.</summary>
+    // retail seam: CPartArray::CheckForCompletedMotions (acclient.c:325095) -> MotionTableManager::CheckForCompletedMotions
+    void CheckForCompletedMotions()
+    {
+    }
+
     /// <summary>Takes the oldest started motion whose animations have finished, in start order.</summary>
     /// <returns>False when none has finished.</returns>
     // retail seam: MotionTableManager::CheckForCompletedMotions (acclient.c:329959)

@@ -86,6 +86,15 @@ public sealed partial class PhysicsObj
             return;
         }
 
+        table.CheckForCompletedMotions();
+        ReportCompletedMotions(table);
+    }
+
+    /// <summary>Hands every motion <paramref name="table"/> has reported done to the movement manager, oldest first (retail's
+    /// manager calls <c>CPhysicsObj::MotionDone</c> for each as it finds it).</summary>
+    // retail: CPhysicsObj::MotionDone (acclient.c:317096), once per motion the manager reports
+    internal void ReportCompletedMotions(IMotionTable table)
+    {
         while (table.TryTakeCompletedMotion(out MotionCommand motion, out bool success))
         {
             Movement?.MotionDone(motion, success);

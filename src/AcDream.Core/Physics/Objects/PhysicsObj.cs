@@ -237,8 +237,8 @@ public sealed partial class PhysicsObj
     /// <summary>The part array and animation seam, or null (retail <c>part_array</c>).</summary>
     /// <remarks>A <see cref="SimplePartArray"/> belongs to one object at a time; it is released when its object takes another
     /// part array (or null).</remarks>
-    /// <exception cref="ArgumentException">The value is a <see cref="SimplePartArray"/> that belongs to another object; nothing
-    /// changes.</exception>
+    /// <exception cref="ArgumentException">The value is a <see cref="SimplePartArray"/> or an <see cref="AnimatedPartArray"/>
+    /// that belongs to another object; nothing changes.</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IPartArray? PartArray
     {
@@ -252,16 +252,29 @@ public sealed partial class PhysicsObj
                 throw new ArgumentException("This SimplePartArray belongs to another object.", nameof(value));
             }
 
+            if (value is AnimatedPartArray { Owner: not null } animatedTaken && animatedTaken.Owner != this)
+            {
+                throw new ArgumentException("This AnimatedPartArray belongs to another object.", nameof(value));
+            }
+
             Touch();
             if (_partArray is SimplePartArray previous && !ReferenceEquals(previous, value))
             {
                 previous.Owner = null;
+            }
+            else if (_partArray is AnimatedPartArray previousAnimated && !ReferenceEquals(previousAnimated, value))
+            {
+                previousAnimated.Owner = null;
             }
 
             _partArray = value;
             if (value is SimplePartArray simple)
             {
                 simple.Owner = this;
+            }
+            else if (value is AnimatedPartArray animated)
+            {
+                animated.Owner = this;
             }
         }
     }
