@@ -246,6 +246,9 @@ public sealed partial class PhysicsObj
             {
                 offset.Origin = new Vector3((float)(o.X * 0.0), (float)(o.Y * 0.0), (float)(o.Z * 0.0));
             }
+
+            // non-retail: root motion bounded (see BoundRootMotion), so no part array or animation data makes a Tick throw
+            offset.Origin = BoundRootMotion(offset.Origin);
         }
 
         // non-retail: the scene's declared effects (retail runs the position manager's adjust_offset)
@@ -268,6 +271,31 @@ public sealed partial class PhysicsObj
         {
             ProcessHooks();
         }
+    }
+
+    /// <summary>The longest root motion one step takes: <see cref="PhysicsGlobals.MaxVelocity"/> ×
+    /// <see cref="PhysicsGlobals.MaxQuantum"/> = 10 m (0x41200000).</summary>
+    internal const float MaxRootMotionPerStep = (float)(PhysicsGlobals.MaxVelocity * PhysicsGlobals.MaxQuantum);
+
+    // non-retail: retail applies whatever offset the sequence produced. A non-finite offset (NaN survives the airborne × 0)
+    // is dropped and one longer than MaxRootMotionPerStep is shortened along its direction: beyond that the sweep refuses
+    // the step (192 m, the position domain) and Tick would throw. Real root motion (a run: 11.33 m/s × 0.2 s = 2.3 m) is
+    // far inside the bound and passes unchanged.
+    internal static Vector3 BoundRootMotion(Vector3 o)
+    {
+        double lengthSq = (double)o.X * o.X + (double)o.Y * o.Y + (double)o.Z * o.Z;
+        if (lengthSq <= (double)MaxRootMotionPerStep * MaxRootMotionPerStep)
+        {
+            return o;
+        }
+
+        if (!double.IsFinite(lengthSq))
+        {
+            return Vector3.Zero;
+        }
+
+        double k = MaxRootMotionPerStep / Math.Sqrt(lengthSq);
+        return new Vector3((float)(o.X * k), (float)(o.Y * k), (float)(o.Z * k));
     }
 
     // retail: Vector3::operator/ (acclient.c:146865): x uses the double reciprocal, y and z its float rounding.
