@@ -69,6 +69,11 @@ public sealed class RetailLandBlockInfo
     /// <summary>The restriction table (cell id → restriction object), empty when not stored. Retail: <c>restriction_table</c>.</summary>
     public IReadOnlyDictionary<uint, uint> RestrictionTable { get; }
 
+    /// <summary>The restriction object of <paramref name="landCellId"/>, 0 when it has none. Retail
+    /// <c>CLandBlockInfo::GetRestrictionIID</c>.</summary>
+    // retail: CLandBlockInfo::GetRestrictionIID (acclient.c:351249)
+    public uint GetRestrictionIid(uint landCellId) => RestrictionTable.TryGetValue(landCellId, out uint v) ? v : 0u;
+
     /// <summary>The ids of the block's indoor cells, in order.</summary>
     public uint CellId(int index) => (Id & 0xFFFF0000u) | (uint)(LandDefs.FirstEnvCell + index);
 

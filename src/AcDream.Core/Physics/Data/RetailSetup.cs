@@ -159,6 +159,22 @@ public sealed class RetailSetup
     /// <summary>Retail <c>default_phstable_id</c>.</summary>
     public uint DefaultPhysicsScriptTableId { get; }
 
+    /// <summary>The holding location with key <paramref name="locationId"/>, or null. Retail
+    /// <c>CSetup::GetHoldingLocation</c> (a hash lookup: of two entries with one key, the later read is found).</summary>
+    // retail: CSetup::GetHoldingLocation (acclient.c:336113)
+    public RetailLocation? GetHoldingLocation(uint locationId)
+    {
+        for (int i = _holdingLocations.Length - 1; i >= 0; i--)
+        {
+            if (_holdingLocations[i].Key == locationId)
+            {
+                return _holdingLocations[i];
+            }
+        }
+
+        return null;
+    }
+
     /// <summary>
     /// The collision half for <see cref="SimplePartArray(SetupPhysics, int)"/>: the spheres, cylinder spheres, radius, height
     /// and step heights as stored.

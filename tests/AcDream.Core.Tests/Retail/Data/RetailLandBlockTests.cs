@@ -101,6 +101,8 @@ public class RetailLandBlockTests
         RetailLandBlockInfo i = RetailLandBlockInfo.Unpack(Info());
         Assert.Equal(1, i.BuildingFlags);
         Assert.Equal(0x70000002u, i.RestrictionTable[0x80800100]);
+        Assert.Equal(0x70000002u, i.GetRestrictionIid(0x80800100));
+        Assert.Equal(0u, i.GetRestrictionIid(0x80800101));
         Assert.Empty(RetailLandBlockInfo.Unpack(Info(restrictions: false)).RestrictionTable);
     }
 

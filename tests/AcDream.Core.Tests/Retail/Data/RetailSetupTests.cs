@@ -89,6 +89,14 @@ public class RetailSetupTests
     }
 
     [Fact]
+    public void GetHoldingLocation_FindsByKey_OrNull()
+    {
+        RetailSetup s = RetailSetup.Unpack(TwoPartSetup());
+        Assert.Equal(1u, s.GetHoldingLocation(2)!.Value.PartId);
+        Assert.Null(s.GetHoldingLocation(3));
+    }
+
+    [Fact]
     public void CylinderSpheres_Spheres_AndSizes()
     {
         RetailSetup s = RetailSetup.Unpack(TwoPartSetup());
