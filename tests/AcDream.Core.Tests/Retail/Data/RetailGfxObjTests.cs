@@ -121,6 +121,18 @@ public class RetailGfxObjTests
     }
 
     [Fact]
+    public void TheStoredSolidLeaf_DecidesTheSolidTest_WhereABuiltTreeHasNone()
+    {
+        // A sphere at (0.9, 0.5, 0.5), r 0.1, touching no polygon: the root's plane x = 0.5 puts it 0.4 (> r) on the positive
+        // side, whose stored leaf is solid: BSPLEAF::sphere_intersects_solid's centre check says inside. BspBuilder's tree over
+        // the same two polygons has no solid leaf, so the same test says outside.
+        RetailGfxObj g = RetailGfxObj.Unpack(Entry());
+        var s = new Sphere(new Vector3(0.9f, 0.5f, 0.5f), 0.1f);
+        Assert.True(g.PhysicsBsp!.SphereIntersectsSolid(s, centerCheck: true));
+        Assert.False(BspBuilder.Build(g.PhysicsPolygons).SphereIntersectsSolid(s, centerCheck: true));
+    }
+
+    [Fact]
     public void SortCenter_DrawingPartConsumedExactly_AndDegradeId()
     {
         RetailGfxObj g = RetailGfxObj.Unpack(Entry());
