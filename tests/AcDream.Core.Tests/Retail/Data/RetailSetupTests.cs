@@ -130,10 +130,12 @@ public class RetailSetupTests
     [Fact]
     public void ToSetupPhysics_FeedsTheSimplePartArray_AsIs()
     {
-        SetupPhysics p = RetailSetup.Unpack(TwoPartSetup()).ToSetupPhysics();
+        RetailSetup s = RetailSetup.Unpack(TwoPartSetup());
+        SetupPhysics p = s.ToSetupPhysics();
         Assert.Equal(2, p.Spheres.Length);
         Assert.Equal(0.6f, p.StepUpHeight);
-        var parts = new SimplePartArray(p);
+        var parts = new SimplePartArray(p, s.Parts.Length);
+        Assert.Equal(2, parts.NumParts);
         Assert.Equal(0.6f, parts.StepUpHeight);
         Assert.Equal(1.5f, parts.StepDownHeight);
     }
