@@ -47,10 +47,15 @@ public sealed class RetailEnvCell
     private readonly RetailCellPortal[] _portals;
     private readonly uint[] _visibleCells;
     private readonly RetailStaticObject[] _staticObjects;
+    private readonly int _environmentOffset;
+    private readonly int[] _portalOffsets;
 
     private RetailEnvCell(uint id, uint flags, uint[] surfaceIds, uint environmentId, int cellStructIndex, Frame frame,
-        RetailCellPortal[] portals, uint[] visibleCells, RetailStaticObject[] staticObjects, uint restrictionObject)
+        RetailCellPortal[] portals, uint[] visibleCells, RetailStaticObject[] staticObjects, uint restrictionObject,
+        int environmentOffset, int[] portalOffsets)
     {
+        _environmentOffset = environmentOffset;
+        _portalOffsets = portalOffsets;
         Id = id;
         Flags = flags;
         _surfaceIds = surfaceIds;
@@ -124,13 +129,16 @@ public sealed class RetailEnvCell
             surfaces[i] = r.ReadUInt16("surface id") | 0x08000000u;
         }
 
+        int envAt = r.Offset;
         uint environmentId = r.ReadUInt16("environment id") | 0x0D000000u;
         int structIndex = r.ReadUInt16("cell struct index");
         Frame frame = r.ReadFrame("cell frame");
         r.CheckCount(numPortals, "portal count", 8);
         var portals = new RetailCellPortal[numPortals];
+        var portalAt = new int[numPortals];
         for (int i = 0; i < portals.Length; i++)
         {
+            portalAt[i] = r.Offset;
             portals[i] = UnpackPortal(ref r, blockMask);
         }
 
@@ -154,7 +162,8 @@ public sealed class RetailEnvCell
         }
 
         uint restriction = (flags & HasRestrictionObjectFlag) != 0 ? r.ReadUInt32("restriction object") : 0u;
-        return new RetailEnvCell(id, flags, surfaces, environmentId, structIndex, frame, portals, visible, statics, restriction);
+        return new RetailEnvCell(id, flags, surfaces, environmentId, structIndex, frame, portals, visible, statics, restriction, envAt,
+            portalAt);
     }
 
     /// <summary>One portal: flags, polygon id, the other cell's low word (ignored with flag 4: the outdoors), the other
@@ -177,23 +186,23 @@ public sealed class RetailEnvCell
     /// </summary>
     /// <exception cref="ArgumentNullException"><paramref name="environment"/> is null.</exception>
     /// <exception cref="RetailDataFormatException">The environment is not the one the cell names, the structure index is out of
-    /// range, or a portal's polygon is not among the structure's portals.</exception>
+    /// range, or a portal's polygon is not among the structure's portals (the offset is that field's in the cell's bytes).</exception>
     public EnvCell ToEnvCell(RetailEnvironment environment)
     {
         ArgumentNullException.ThrowIfNull(environment);
         if (environment.Id != EnvironmentId)
         {
-            throw new RetailDataFormatException("CEnvCell", 0, $"cell 0x{Id:X8} names environment 0x{EnvironmentId:X8}, not 0x{environment.Id:X8}");
+            throw new RetailDataFormatException("CEnvCell", _environmentOffset, $"cell 0x{Id:X8} names environment 0x{EnvironmentId:X8}, not 0x{environment.Id:X8}");
         }
 
         RetailCellStruct s = environment.GetCellStruct(CellStructIndex)
-            ?? throw new RetailDataFormatException("CEnvCell", 0, $"cell 0x{Id:X8}: structure index {CellStructIndex} is outside environment 0x{EnvironmentId:X8} ({environment.CellStructs.Length} structures)");
+            ?? throw new RetailDataFormatException("CEnvCell", _environmentOffset + 2, $"cell 0x{Id:X8}: structure index {CellStructIndex} is outside environment 0x{EnvironmentId:X8} ({environment.CellStructs.Length} structures)");
         var portals = new CellPortal[_portals.Length];
         for (int i = 0; i < portals.Length; i++)
         {
             RetailCellPortal p = _portals[i];
             Polygon poly = s.Structure.GetPortal(p.PolyId)
-                ?? throw new RetailDataFormatException("CEnvCell", 0, $"cell 0x{Id:X8}: portal {i} names polygon {p.PolyId}, not a portal of its structure");
+                ?? throw new RetailDataFormatException("CEnvCell", _portalOffsets[i] + 2, $"cell 0x{Id:X8}: portal {i} names polygon {p.PolyId}, not a portal of its structure");
             portals[i] = new CellPortal(p.OtherCellId, poly, p.PortalSide, p.OtherPortalId, p.ExactMatch);
         }
 

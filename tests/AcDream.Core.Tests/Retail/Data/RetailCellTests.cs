@@ -151,6 +151,8 @@ public class RetailCellTests
         byte[] bytes = RetailEntries.EnvCell(0xA9B40143, 0, 0x42, 0, CellFrame, [new PortalDef(1, 0, 0x0144, 0)]);
         var ex = Assert.Throws<RetailDataFormatException>(() => RetailEnvCell.Unpack(bytes).ToEnvCell(e));
         Assert.Contains("polygon 0", ex.Reason);
+        // entry id 4, flags 4, cell id 4, counts 4, environment 2, index 2, frame 28 = 48: the portal; its polygon id at 50.
+        Assert.Equal(50, ex.Offset);
     }
 
     [Fact]
