@@ -104,6 +104,19 @@ public class RetailLandBlockLoaderTests
     }
 
     [Fact]
+    public void AnEntryHoldingAnotherId_IsAFormatError_AndAddsNothing()
+    {
+        // The corridor's bytes served for the room's id: the cell id inside (offset 8) is not the one asked for.
+        var cells = new WorldCells(SweepScene.Terrain());
+        DictionarySource s = RoomSceneEntries.Source();
+        s.Entries[RoomScene.Room] = s.Entries[RoomScene.Corridor];
+        var e = Assert.Throws<RetailDataFormatException>(() => RetailLandBlockLoader.Load(cells, 0x8080FFFF, s));
+        Assert.Equal("CEnvCell", e.Structure);
+        Assert.Equal(8, e.Offset);
+        Assert.Equal(0, cells.EnvCellCount);
+    }
+
+    [Fact]
     public void TheEnvironmentIsReadOnce_ForBothCells()
     {
         DictionarySource s = RoomSceneEntries.Source();

@@ -147,4 +147,51 @@ public class RetailDataFuzzTests
             Read(name, b);
         }
     }
+
+    [Fact]
+    public void TheLoader_WithOneMutatedEntry_ThrowsOnlyTheFormatOrMissingEntryException_AndAddsNothingThen()
+    {
+        // A mutated count or id can name an entry the source does not hold: that is the loader's ArgumentException (a missing
+        // entry); anything else wrong is the format exception. Either way the world is as before.
+        var rng = new Random(28);
+        DictionarySource clean = RoomSceneEntries.Source();
+        var ids = new List<uint>(clean.Entries.Keys);
+        for (int i = 0; i < 400; i++)
+        {
+            var s = new DictionarySource();
+            foreach (KeyValuePair<uint, byte[]> e in clean.Entries)
+            {
+                s.Entries[e.Key] = (byte[])e.Value.Clone();
+            }
+
+            byte[] b = s.Entries[ids[i % ids.Count]];
+            if (i % 2 == 0)
+            {
+                for (int k = rng.Next(1, 4); k > 0; k--)
+                {
+                    b[rng.Next(b.Length)] = (byte)rng.Next(256);
+                }
+            }
+            else
+            {
+                s.Entries[ids[i % ids.Count]] = b.AsSpan(0, rng.Next(b.Length)).ToArray();
+            }
+
+            var cells = new AcDream.Core.Physics.Cells.WorldCells(SweepScene.Terrain());
+            try
+            {
+                RetailLandBlockLoader.Load(cells, 0x8080FFFF, s);
+            }
+            catch (RetailDataFormatException)
+            {
+                Assert.Equal(0, cells.Terrain.LandBlockCount);
+                Assert.Equal(0, cells.EnvCellCount);
+            }
+            catch (ArgumentException e) when (e.Message.StartsWith("The data source holds no entry", StringComparison.Ordinal))
+            {
+                Assert.Equal(0, cells.Terrain.LandBlockCount);
+                Assert.Equal(0, cells.EnvCellCount);
+            }
+        }
+    }
 }

@@ -62,7 +62,8 @@ public static class RetailLandBlockLoader
     /// <param name="source">The client's data files.</param>
     /// <exception cref="ArgumentNullException">An argument is null.</exception>
     /// <exception cref="ArgumentException">The id is not inside the world, or an entry the block needs is missing from the source.</exception>
-    /// <exception cref="RetailDataFormatException">An entry's bytes are bad; nothing has been added.</exception>
+    /// <exception cref="RetailDataFormatException">An entry's bytes are bad (also: an entry holds another id than the one asked
+    /// for); nothing has been added.</exception>
     /// <exception cref="InvalidOperationException">Called from inside a tick of the world these cells serve; nothing has been added.</exception>
     public static RetailLandBlockContent Load(WorldCells cells, uint blockId, IRetailDataSource source)
     {
@@ -75,6 +76,7 @@ public static class RetailLandBlockLoader
         }
 
         RetailLandBlock land = RetailLandBlock.Unpack(Entry(source, block));
+        Expect("CLandBlock", land.Id, block);
         LandBlock landBlock = land.ToLandBlock(cells.Terrain.HeightTable);
         RetailLandBlockInfo? info = null;
         var envCells = new List<EnvCell>();
@@ -84,14 +86,17 @@ public static class RetailLandBlockLoader
         if (land.HasInfo)
         {
             info = RetailLandBlockInfo.Unpack(Entry(source, (block & 0xFFFF0000u) | 0xFFFEu));
+            Expect("CLandBlockInfo", info.Id, (block & 0xFFFF0000u) | 0xFFFEu);
             statics.AddRange(info.Objects.ToArray());
             var environments = new Dictionary<uint, RetailEnvironment>();
             for (int i = 0; i < info.NumCells; i++)
             {
                 RetailEnvCell cell = RetailEnvCell.Unpack(Entry(source, info.CellId(i)));
+                Expect("CEnvCell", cell.Id, info.CellId(i), 8);
                 if (!environments.TryGetValue(cell.EnvironmentId, out RetailEnvironment? env))
                 {
                     env = RetailEnvironment.Unpack(Entry(source, cell.EnvironmentId));
+                    Expect("CEnvironment", env.Id, cell.EnvironmentId);
                     environments.Add(cell.EnvironmentId, env);
                 }
 
@@ -111,6 +116,7 @@ public static class RetailLandBlockLoader
                 if (!shells.TryGetValue(b.ModelId, out RetailGfxObj? gfx))
                 {
                     gfx = RetailGfxObj.Unpack(Entry(source, b.ModelId));
+                    Expect("CGfxObj", gfx.Id, b.ModelId);
                     shells.Add(b.ModelId, gfx);
                 }
 
@@ -150,6 +156,15 @@ public static class RetailLandBlockLoader
         }
 
         return new RetailLandBlockContent(landBlock, info, envCells.ToArray(), placed, noShell.ToArray(), statics.ToArray());
+    }
+
+    // An entry whose own id is not the id it was asked for is not that entry.
+    private static void Expect(string structure, uint got, uint asked, int offset = 0)
+    {
+        if (got != asked)
+        {
+            throw new RetailDataFormatException(structure, offset, $"the entry asked for as 0x{asked:X8} holds 0x{got:X8}");
+        }
     }
 
     private static ReadOnlySpan<byte> Entry(IRetailDataSource source, uint id)
