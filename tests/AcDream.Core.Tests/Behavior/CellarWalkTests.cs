@@ -29,7 +29,8 @@ public class CellarWalkTests
     private const uint Lower = CellarScene.Block | 0x0148;     // lower cellar, ramps n.z 0.96 from -3.05 to -4
     private const uint Alcove = CellarScene.Block | 0x0149;    // alcove off the lower cellar, floor z -4
 
-    private static CellarScene Scene() => CellarScene.Load(GeometryTestData.Dir!, TerrainTestData.Dir);
+    /// <summary>The scene the walks run in (today's path; a derived class runs every walk through retail bytes).</summary>
+    private protected virtual CellarScene Scene() => CellarScene.Load(GeometryTestData.Dir!, TerrainTestData.Dir);
 
     private static Frame CellarFrame(CellarScene s) => s.Env[Doorway].Cell.Pos.Frame;
 

@@ -136,6 +136,70 @@ internal ref struct RetailDataReader
         Take(pad, "alignment padding");
     }
 
+    /// <summary>Retail <c>SB_As32Bit_Compressed::Serialize</c> (acclient.c:489675), reading: one byte below 0x80 is the
+    /// value; a first byte with 0x80 and not 0x40 takes a second byte (<c>(b0 &amp; 0x7F) &lt;&lt; 8 | b1</c>); with 0x40 as well,
+    /// a second byte and a 16-bit word (<c>((b0 &amp; 0x3F) &lt;&lt; 8 | b1) &lt;&lt; 16 | w</c>).</summary>
+    // retail: SB_As32Bit_Compressed::Serialize (acclient.c:489675)
+    public uint ReadCompressedUInt32(string what = "compressed count")
+    {
+        byte b0 = ReadByte(what);
+        if ((b0 & 0x80) == 0)
+        {
+            return b0;
+        }
+
+        byte b1 = ReadByte(what);
+        if ((b0 & 0x40) != 0)
+        {
+            ushort w = ReadUInt16(what);
+            return (uint)w | ((uint)(b1 | ((b0 & 0x3F) << 8)) << 16);
+        }
+
+        return (uint)(b1 | ((b0 & 0x7F) << 8));
+    }
+
+    /// <summary>Three finite singles x, y, z; a NaN or infinity is a format error.</summary>
+    public Vector3 ReadFiniteVector3(string what)
+    {
+        int at = _offset;
+        Vector3 v = ReadVector3(what);
+        if (!float.IsFinite(v.X) || !float.IsFinite(v.Y) || !float.IsFinite(v.Z))
+        {
+            throw ErrorAt(at, $"{what} is not finite");
+        }
+
+        return v;
+    }
+
+    /// <summary>A plane: normal x, y, z then d (retail <c>Plane::UnPack</c> order, as <c>BSPNODE::UnPack</c> inlines it);
+    /// a NaN or infinity is a format error.</summary>
+    public Collision.Primitives.CollisionPlane ReadPlane(string what)
+    {
+        Vector3 n = ReadFiniteVector3(what);
+        float d = ReadFiniteSingle(what);
+        return new Collision.Primitives.CollisionPlane(n, d);
+    }
+
+    /// <summary>Retail <c>CSphere::UnPack</c> (acclient.c:334267): centre x, y, z then radius; a NaN or infinity is a format
+    /// error (the library's queries take finite spheres).</summary>
+    // retail: CSphere::UnPack (acclient.c:334267)
+    public Collision.Primitives.Sphere ReadSphere(string what)
+    {
+        Vector3 c = ReadFiniteVector3(what);
+        float r = ReadFiniteSingle(what);
+        return new Collision.Primitives.Sphere(c, r);
+    }
+
+    /// <summary>Retail <c>CCylSphere::UnPack</c> (acclient.c:361547): low point x, y, z, radius, then height (finite).</summary>
+    // retail: CCylSphere::UnPack (acclient.c:361547)
+    public Collision.Primitives.CylSphere ReadCylSphere(string what)
+    {
+        Vector3 low = ReadFiniteVector3(what);
+        float radius = ReadFiniteSingle(what);
+        float height = ReadFiniteSingle(what);
+        return new Collision.Primitives.CylSphere(low, radius, height);
+    }
+
     /// <summary>The bytes not yet read, without consuming them.</summary>
     public readonly ReadOnlySpan<byte> Rest => _data.Slice(_offset);
 }

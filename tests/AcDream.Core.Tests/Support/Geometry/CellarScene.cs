@@ -7,6 +7,8 @@ using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Data;
+using AcDream.Core.Tests.Support.Data;
 using AcDream.Core.Tests.Support.Shared;
 
 namespace AcDream.Core.Tests.Support.Geometry;
@@ -38,8 +40,11 @@ internal sealed class CellarScene
     /// <summary>Every physics polygon of the cells and the shell in landblock coordinates (0 = the shell).</summary>
     public List<(Vector3[] World, uint Cell)> WorldPolygons { get; }
 
-    /// <summary>Builds the scene from the geometry folder and the terrain folder.</summary>
-    public static CellarScene Load(string geometryDir, string terrainDir)
+    /// <summary>Builds the scene from the geometry folder and the terrain folder. With <paramref name="throughRetailBytes"/>,
+    /// every cell, its environment and the shell GfxObj are first written in retail's byte layout (the BspBuilder trees
+    /// written as retail nodes: <see cref="RetailEntries.Tree"/>) and the scene is built from what the library's unpackers
+    /// read back.</summary>
+    public static CellarScene Load(string geometryDir, string terrainDir, bool throughRetailBytes = false)
     {
         var dumps = new List<CellDump>();
         foreach (string sub in new[] { "cellar-ascent", "cellar-rooms", "cellar-lip", "flap-doorway" })
@@ -78,8 +83,17 @@ internal sealed class CellarScene
                 portals[i] = new CellPortal(other, portalPolys[i], (p.Flags & 2) != 0 ? 0 : 1, BackPortal(dumps, other, d.CellId), (p.Flags & 1) != 0);
             }
 
-            var structure = new CellStruct(BspBuilder.Build(physics), BspBuilder.BuildCell(HullPlanes(d)), portalPolys);
-            var cell = new EnvCell(d.CellId, frame, structure, portals);
+            EnvCell cell;
+            if (throughRetailBytes)
+            {
+                cell = ThroughRetailBytes(d, frame, BspBuilder.Build(physics), BspBuilder.BuildCell(HullPlanes(d)), dumps);
+            }
+            else
+            {
+                var structure = new CellStruct(BspBuilder.Build(physics), BspBuilder.BuildCell(HullPlanes(d)), portalPolys);
+                cell = new EnvCell(d.CellId, frame, structure, portals);
+            }
+
             cells.AddEnvCell(cell);
             env[d.CellId] = (cell, d);
             foreach (DumpPolygon p in d.PhysicsPolygons)
@@ -104,7 +118,15 @@ internal sealed class CellarScene
         }
 
         uint landCell = Holtburg.CentreCell(bf.Origin.X, bf.Origin.Y);
-        var part = new PhysicsPart(new GfxObjPhysics(BspBuilder.Build(ToPolygons(shell))), new Position(landCell, bf), Vector3.One);
+        BspTree shellBsp = BspBuilder.Build(ToPolygons(shell));
+        GfxObjPhysics shellPhysics = new(shellBsp);
+        if (throughRetailBytes)
+        {
+            (List<Vector3> verts, PolyDef[] defs) = RetailEntries.Defs(shellBsp.Polygons.ToArray());
+            shellPhysics = RetailGfxObj.Unpack(RetailEntries.GfxObj(0x01000A2B, verts, defs, shellBsp, Vector3.Zero)).Physics!;
+        }
+
+        var part = new PhysicsPart(shellPhysics, new Position(landCell, bf), Vector3.One);
         var building = new BuildingObj(part, doors.ToArray());
         foreach (DumpPolygon p in shell)
         {
@@ -116,6 +138,75 @@ internal sealed class CellarScene
         cells.Terrain.GetLandCell(landCell)!.Building = building;
         return new CellarScene(cells, env, polys);
     }
+
+    /// <summary>
+    /// The cell written as retail entries and read back: an environment 0x0D00CCCC (CCCC the cell's low word) holding one
+    /// structure — the vertex array of the drawing and physics polygons, the drawing polygons (ids = their dump index), the
+    /// portal list, the cell tree and physics tree given — and the cell entry (frame, portals with the dump's flags, the back
+    /// portal's index).
+    /// </summary>
+    public static EnvCell ThroughRetailBytes(CellDump d, in Frame frame, BspTree physicsBsp, BspTree cellBsp, List<CellDump> dumps) =>
+        Unpacked(d, frame, physicsBsp, cellBsp, dumps).Cell;
+
+    /// <summary>As <see cref="ThroughRetailBytes"/>, with the unpacked entries.</summary>
+    public static (EnvCell Cell, RetailEnvCell Entry, RetailEnvironment Environment) Unpacked(CellDump d, in Frame frame, BspTree physicsBsp,
+        BspTree cellBsp, List<CellDump> dumps)
+    {
+        var verts = new List<Vector3>();
+        var drawing = new List<PolyDef>();
+        (_, List<ushort[]> drawIds) = RetailEntries.Mesh(Array.ConvertAll(d.PortalPolygons, p => (IReadOnlyList<Vector3>)p.Vertices), verts);
+        for (int i = 0; i < drawIds.Count; i++)
+        {
+            drawing.Add(new PolyDef((short)i, drawIds[i]));
+        }
+
+        (_, PolyDef[] physics) = RetailEntries.Defs(physicsBsp.Polygons.ToArray(), verts);
+        var portalList = new List<ushort>();
+        var portals = new PortalDef[d.Portals.Length];
+        for (int i = 0; i < d.Portals.Length; i++)
+        {
+            DumpPortal p = d.Portals[i];
+            if (!portalList.Contains(p.PolygonId))
+            {
+                portalList.Add(p.PolygonId);
+            }
+
+            uint other = p.OtherCellId == 0xFFFF ? CellPortal.OutsideCellId : Block | p.OtherCellId;
+            portals[i] = new PortalDef(p.Flags, (short)p.PolygonId, p.OtherCellId, (short)BackPortal(dumps, other, d.CellId));
+        }
+
+        ushort low = (ushort)(d.CellId & 0xFFFF);
+        byte[] env = RetailEntries.Environment(0x0D000000u | low,
+            w => RetailEntries.CellStruct(w, 0, verts, drawing, portalList.ToArray(), cellBsp, physics, physicsBsp));
+        byte[] cell = RetailEntries.EnvCell(d.CellId, 0, low, 0, frame, portals);
+        RetailEnvironment e = RetailEnvironment.Unpack(env);
+        RetailEnvCell c = RetailEnvCell.Unpack(cell);
+        return (c.ToEnvCell(e), c, e);
+    }
+
+    /// <summary>Reads every EnvCell dump of the four cellar folders.</summary>
+    public static List<CellDump> ReadDumps(string geometryDir)
+    {
+        var dumps = new List<CellDump>();
+        foreach (string sub in new[] { "cellar-ascent", "cellar-rooms", "cellar-lip", "flap-doorway" })
+        {
+            foreach (string f in Directory.GetFiles(Path.Combine(geometryDir, sub), "0x*.json"))
+            {
+                if (!f.EndsWith(".gfxobj.json", StringComparison.Ordinal))
+                {
+                    dumps.Add(CellDump.Read(f));
+                }
+            }
+        }
+
+        return dumps;
+    }
+
+    /// <summary>The library polygons of a dump's polygon list (ids = index), as today's path builds them.</summary>
+    public static Polygon[] PolygonsOf(DumpPolygon[] polys) => ToPolygons(polys);
+
+    /// <summary>The inward hull planes today's path builds the cell region from.</summary>
+    public static CollisionPlane[] CellPlanesOf(CellDump d) => HullPlanes(d);
 
     /// <summary>True for an indoor (env cell) id: low word 0x0100 and above.</summary>
     public static bool IsIndoor(uint id) => (id & 0xFFFF) >= 0x0100;

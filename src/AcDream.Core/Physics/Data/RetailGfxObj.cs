@@ -1,0 +1,180 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.Collision.Bsp;
+using AcDream.Core.Physics.Collision.Primitives;
+
+namespace AcDream.Core.Physics.Data;
+
+/// <summary>
+/// A graphics object (a part's mesh; data-file entry 0x01xxxxxx) as retail's <c>CGfxObj::Serialize</c> reads it, its physics
+/// half kept: the vertex positions, the physics polygons, the physics BSP as stored, the physics sphere and the sort centre.
+/// The surfaces' ids are kept; the drawing polygons and the drawing BSP are read and dropped.
+/// </summary>
+public sealed class RetailGfxObj
+{
+    /// <summary>Retail flag 1: the entry holds physics polygons and a physics BSP.</summary>
+    public const uint HasPhysicsFlag = 1;
+
+    /// <summary>Retail flag 2: the entry holds drawing polygons and a drawing BSP.</summary>
+    public const uint HasDrawingFlag = 2;
+
+    /// <summary>Retail flag 8: the entry ends with a degrade table id.</summary>
+    public const uint HasDegradeFlag = 8;
+
+    private readonly uint[] _surfaceIds;
+    private readonly Vector3[] _vertices;
+    private readonly Polygon[] _physicsPolygons;
+
+    private RetailGfxObj(uint id, uint flags, uint[] surfaceIds, Vector3[] vertices, Polygon[] physicsPolygons, BspTree? physicsBsp,
+        Vector3 sortCenter, uint degradeId, int drawingPolygonCount)
+    {
+        Id = id;
+        Flags = flags;
+        _surfaceIds = surfaceIds;
+        _vertices = vertices;
+        _physicsPolygons = physicsPolygons;
+        PhysicsBsp = physicsBsp;
+        SortCenter = sortCenter;
+        DegradeId = degradeId;
+        DrawingPolygonCount = drawingPolygonCount;
+        Physics = physicsBsp is null ? null : new GfxObjPhysics(physicsBsp);
+    }
+
+    /// <summary>The entry's id (0x01xxxxxx). Retail: <c>m_DID</c>.</summary>
+    public uint Id { get; }
+
+    /// <summary>The stored flags (<see cref="HasPhysicsFlag"/>, <see cref="HasDrawingFlag"/>, <see cref="HasDegradeFlag"/>).</summary>
+    public uint Flags { get; }
+
+    /// <summary>The surfaces' ids (0x08xxxxxx). Retail: <c>m_rgSurfaces</c>.</summary>
+    public ReadOnlySpan<uint> SurfaceIds => _surfaceIds;
+
+    /// <summary>The vertex positions, object-local. Retail: <c>vertex_array</c>.</summary>
+    public ReadOnlySpan<Vector3> Vertices => _vertices;
+
+    /// <summary>The physics polygons, object-local, planes by <c>CPolygon::make_plane</c>. Retail: <c>physics_polygons</c>.</summary>
+    public ReadOnlySpan<Polygon> PhysicsPolygons => _physicsPolygons;
+
+    /// <summary>The physics BSP as stored (null without <see cref="HasPhysicsFlag"/>). Retail: <c>physics_bsp</c>.</summary>
+    public BspTree? PhysicsBsp { get; }
+
+    /// <summary>The physics sphere: the physics BSP's root sphere (retail <c>BSPTREE::GetSphere</c>), or null. Retail:
+    /// <c>physics_sphere</c>.</summary>
+    public Sphere? PhysicsSphere => PhysicsBsp?.Sphere;
+
+    /// <summary>The sort centre. Retail: <c>sort_center</c>.</summary>
+    public Vector3 SortCenter { get; }
+
+    /// <summary>The degrade table id, 0 when not stored. Retail: <c>m_didDegrade</c>.</summary>
+    public uint DegradeId { get; }
+
+    /// <summary>How many drawing polygons the entry holds (read and dropped).</summary>
+    public int DrawingPolygonCount { get; }
+
+    /// <summary>The object's physics for a <see cref="Objects.Parts.PhysicsPart"/> or a building, or null when it has none.</summary>
+    public GfxObjPhysics? Physics { get; }
+
+    /// <summary>
+    /// Unpacks one GfxObj entry's bytes (after the data-file container): the id, the flags (4-aligned), the surface count
+    /// (compressed) and ids, the vertex array, the physics polygons and BSP (flag 1), the sort centre, the drawing polygons
+    /// and BSP (flag 2), the degrade id (flag 8). Retail <c>CGfxObj::Serialize</c>.
+    /// </summary>
+    /// <exception cref="RetailDataFormatException">The bytes are not a GfxObj (truncated, inconsistent, or not finite).</exception>
+    // retail: CGfxObj::Serialize (acclient.c:356682)
+    public static RetailGfxObj Unpack(ReadOnlySpan<byte> data)
+    {
+        var r = new RetailDataReader(data, "CGfxObj");
+        return Unpack(ref r);
+    }
+
+    internal static RetailGfxObj Unpack(ref RetailDataReader r)
+    {
+        uint id = r.ReadUInt32("id");
+        r.Align4();
+        uint flags = r.ReadUInt32("flags");
+        int numSurfaces = r.CheckCount(r.ReadCompressedUInt32("surface count"), "surface count", 4);
+        var surfaces = new uint[numSurfaces];
+        for (int i = 0; i < surfaces.Length; i++)
+        {
+            surfaces[i] = ReadDataId(ref r);
+        }
+
+        Vector3[] vertices = SerializeVertexArray(ref r);
+        Polygon[] physicsPolys = [];
+        BspTree? physicsBsp = null;
+        if ((flags & HasPhysicsFlag) != 0)
+        {
+            r.Structure = "CPolygon";
+            int n = r.CheckCount(r.ReadCompressedUInt32("physics polygon count"), "physics polygon count", 12);
+            RetailPolygon[] raw = SerializePolygons(ref r, n, vertices.Length);
+            physicsPolys = RetailPolygon.ToPolygons(raw, vertices, "CGfxObj");
+            int bspAt = r.Offset;
+            physicsBsp = SerializeBsp(ref r, RetailBspKind.Physics, physicsPolys, physicsPolys.Length)!;
+            if (physicsBsp.Sphere.Radius < 0f)
+            {
+                throw r.ErrorAt(bspAt, "the physics sphere has a negative radius");
+            }
+        }
+
+        r.Structure = "CGfxObj";
+        Vector3 sortCenter = SerializeVector3(ref r);
+        int drawingCount = 0;
+        if ((flags & HasDrawingFlag) != 0)
+        {
+            r.Structure = "CPolygon";
+            drawingCount = r.CheckCount(r.ReadCompressedUInt32("drawing polygon count"), "drawing polygon count", 12);
+            SerializePolygons(ref r, drawingCount, vertices.Length);
+            SerializeBsp(ref r, RetailBspKind.Drawing, [], drawingCount);
+        }
+
+        r.Structure = "CGfxObj";
+        uint degrade = 0;
+        if ((flags & HasDegradeFlag) != 0)
+        {
+            r.Align4();
+            degrade = r.ReadUInt32("degrade id");
+        }
+
+        return new RetailGfxObj(id, flags, surfaces, vertices, physicsPolys, physicsBsp, sortCenter, degrade, drawingCount);
+    }
+
+    // The vertex array through its own unpack.
+    // retail: SB_AsPackObj<0>::Serialize (acclient.c:356238), the CVertexArray instance
+    private static Vector3[] SerializeVertexArray(ref RetailDataReader r)
+    {
+        r.Structure = "CVertexArray";
+        return RetailVertexArray.Unpack(ref r);
+    }
+
+    // Each polygon through its own unpack.
+    // retail: SB_AsPackObj<0>::Serialize (acclient.c:356272), the CPolygon instance
+    private static RetailPolygon[] SerializePolygons(ref RetailDataReader r, int count, int numVertices)
+    {
+        r.Structure = "CPolygon";
+        return RetailPolygon.UnpackList(ref r, count, numVertices);
+    }
+
+    // A BSP tree through its own unpack.
+    // retail: SB_AsPackObj<0>::Serialize (acclient.c:356306), the BSPTREE instance
+    private static BspTree? SerializeBsp(ref RetailDataReader r, RetailBspKind kind, Polygon[] polygons, int numPolys)
+    {
+        r.Structure = "BSPTREE";
+        return RetailBsp.UnpackTree(ref r, kind, polygons, numPolys);
+    }
+
+    // The sort centre: 12 bytes, x, y, z.
+    // retail: SB_AsPackObj<0>::Serialize (acclient.c:356559), the Vector3 instance
+    private static Vector3 SerializeVector3(ref RetailDataReader r)
+    {
+        r.Structure = "CGfxObj";
+        return r.ReadFiniteVector3("sort center");
+    }
+
+    // A surface id: 4-aligned, 4 bytes.
+    // retail: SB_AsDataID<0>::Serialize (acclient.c:356648)
+    private static uint ReadDataId(ref RetailDataReader r)
+    {
+        r.Align4();
+        return r.ReadUInt32("surface id");
+    }
+}
