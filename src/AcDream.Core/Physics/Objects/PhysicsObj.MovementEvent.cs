@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Spatial;
 namespace AcDream.Core.Physics.Objects;
 
 // Retail's MovementEvent entry point (CPhysics::SetObjectMovement -> CPhysicsObj::unpack_movement), and the object's own
-// motion commands (CPhysicsObj::DoMotion / StopMotion / StopCompletely).
+// motion commands (CPhysicsObj::DoMotion / StopMotion).
 public sealed partial class PhysicsObj
 {
     /// <summary>
@@ -156,20 +156,6 @@ public sealed partial class PhysicsObj
         ThrowIfRemoved();
         _lastMoveWasAutonomous = true;
         return Movement is null ? MotionError.NoMotionTable : RetailMovement().StopMotion(motion, p);
-    }
-
-    /// <summary>Stops every motion (retail <c>CPhysicsObj::StopCompletely</c>): the movement manager's
-    /// <see cref="MovementManager.StopCompletely"/>; nothing without a movement manager.</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world, or its movement manager is a
-    /// client's own.</exception>
-    // retail: CPhysicsObj::StopCompletely (acclient.c:317392)
-    public void StopCompletely()
-    {
-        ThrowIfRemoved();
-        if (Movement is not null)
-        {
-            RetailMovement().StopCompletely();
-        }
     }
 
     private MovementManager RetailMovement() => Movement as MovementManager
