@@ -14,23 +14,6 @@ public class StickyAndConstraintTests
 {
     private static readonly Vector3 Start = new(50f, 50f, 0f);
 
-    private sealed class Tracker : ITargetTracker
-    {
-        public int Sets;
-        public int Clears;
-        public float LastRadius;
-        public double LastQuantum;
-
-        public void SetTarget(PhysicsObj obj, uint contextId, uint objectId, float radius, double quantum)
-        {
-            Sets++;
-            LastRadius = radius;
-            LastQuantum = quantum;
-        }
-
-        public void ClearTarget(PhysicsObj obj) => Clears++;
-    }
-
     private static (ManagerScene Scene, PhysicsObj Target) StuckScene(Vector3 targetAt)
     {
         var s = new ManagerScene(Start);
@@ -102,21 +85,22 @@ public class StickyAndConstraintTests
     public void Sticky_LastsOneSecond_ThenUnsticksAndCancelsTheMoveTo()
     {
         var s = new ManagerScene(Start);
-        var tracker = new Tracker();
         var motion = new StubMotion(4.0, 4.0);
         s.Creature.Movement = motion;
-        s.Managers.TargetTracker = tracker;
         s.Managers.StickTo(42, 0.5f, 1f);
-        Assert.Equal(1, tracker.Sets);
-        Assert.Equal(0.5f, tracker.LastRadius);
-        Assert.Equal(0.5, tracker.LastQuantum);
+        // set_target(0, 42, 0.5, 0.5) (acclient.c:388687): the creature's TargetManager tracks 42 (unknown to the world, so
+        // no voyeur is registered anywhere).
+        Assert.True(s.Creature.TargetManager!.HasTarget);
+        Assert.Equal(42u, s.Creature.TargetManager.TargetInfo.ObjectId);
+        Assert.Equal(0.5f, s.Creature.TargetManager.TargetInfo.Radius);
+        Assert.Equal(0.5, s.Creature.TargetManager.TargetInfo.Quantum);
         s.World.SetCurrentTime(1.0);   // timeout = 0 + 1.0; the test is strict `>` (acclient.c:388613)
         s.Managers.UseTime();
         Assert.Equal(42u, s.Creature.StickyObjectId);
         s.World.SetCurrentTime(1.001);
         s.Managers.UseTime();
         Assert.Equal(0u, s.Creature.StickyObjectId);
-        Assert.Equal(1, tracker.Clears);
+        Assert.False(s.Creature.TargetManager.HasTarget);   // clear_target
         Assert.Equal(AcDream.Core.Physics.Motion.MotionError.ActionCancelled, motion.LastCancel);   // 0x36
     }
 

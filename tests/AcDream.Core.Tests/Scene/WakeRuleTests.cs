@@ -6,6 +6,7 @@ using System.Reflection;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;
@@ -57,13 +58,9 @@ public class WakeRuleTests
         public override bool Execute(PhysicsObj obj) => true;
     }
 
-    private sealed class NopSeams : IDetectionManager, ITargetManager, IParticleManager, IScriptManager
+    private sealed class NopSeams : IDetectionManager, IParticleManager, IScriptManager
     {
         public void CheckDetection()
-        {
-        }
-
-        public void HandleTargetting()
         {
         }
 
@@ -135,7 +132,10 @@ public class WakeRuleTests
         ["set_PartArray(IPartArray)"] = (null, f => f.Obj.PartArray = new SimplePartArray(numParts: 1, numSpheres: 1)),
         ["set_ParticleManager(IParticleManager)"] = (null, f => f.Obj.ParticleManager = new NopSeams()),
         ["set_ScriptManager(IScriptManager)"] = (null, f => f.Obj.ScriptManager = new NopSeams()),
-        ["set_TargetManager(ITargetManager)"] = (null, f => f.Obj.TargetManager = new NopSeams()),
+        ["MoveToObject(UInt32, MovementParameters)"] = (null, f => f.Obj.MoveToObject(f.Other.Id, new MovementParameters())),
+        ["TurnToObject(UInt32, MovementParameters)"] = (null, f => f.Obj.TurnToObject(f.Other.Id, new MovementParameters())),
+        ["TurnToHeading(MovementParameters)"] = (null, f => f.Obj.TurnToHeading(new MovementParameters { DesiredHeading = 90f })),
+        ["StopCompletely()"] = (null, f => f.Obj.StopCompletely()),
     };
 
     /// <summary>The documented no-wake list (<see cref="PhysicsObj.Touch"/>): public mutators that leave a dormant object

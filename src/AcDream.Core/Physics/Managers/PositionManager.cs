@@ -29,12 +29,6 @@ public sealed class PositionManager
     public ConstraintManager? ConstraintManager { get; private set; }
 
     /// <summary>
-    /// Client seam for the target tracking the sticky manager requests (retail's TargetManager); null = nobody is told.
-    /// (Its move-to cancellation goes to <see cref="PhysicsObj.Movement"/>.)
-    /// </summary>
-    public ITargetTracker? TargetTracker { get; set; }
-
-    /// <summary>
     /// Lets each sub-manager replace or adjust the step's local offset frame, in the order interpolation, sticky, constraint.
     /// </summary>
     /// <param name="offset">The substep's offset frame (animation root motion on entry).</param>

@@ -178,7 +178,7 @@ public sealed class StickyManager
         TargetId = objectId;
         Initialized = false;
         StickyTimeoutTime = PhysicsObj.World.CurrentTime + StickyTime;
-        PhysicsObj.PositionManager?.TargetTracker?.SetTarget(PhysicsObj, 0, objectId, TargetTrackRadius, TargetTrackQuantum);
+        PhysicsObj.SetTarget(0, objectId, TargetTrackRadius, TargetTrackQuantum);
     }
 
     /// <summary>A tracking report for the target: Ok stores its position and initialises the stick; any other status unsticks.</summary>
@@ -223,7 +223,7 @@ public sealed class StickyManager
     {
         TargetId = 0;
         Initialized = false;
-        PhysicsObj.PositionManager?.TargetTracker?.ClearTarget(PhysicsObj);
+        PhysicsObj.ClearTarget();
         PhysicsObj.CancelMoveTo();
     }
 }

@@ -1,3 +1,4 @@
+using System.Numerics;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 
@@ -29,35 +30,59 @@ public enum TargetStatus : uint
 }
 
 /// <summary>
-/// A target-tracking report delivered to <see cref="PhysicsObj.HandleUpdateTarget"/> (retail <c>TargetInfo</c>,
-/// acclient.h:31591; only the fields the position managers read).
+/// A target-tracking report (retail <c>TargetInfo</c>, acclient.h:31591): what an object's <see cref="TargetManager"/> learns
+/// of the object it tracks, delivered to <see cref="PhysicsObj.HandleUpdateTarget"/> (then to the move-to and sticky
+/// managers). <c>new TargetInfo()</c> gives retail's constructor (identity frames, status
+/// <see cref="TargetStatus.Undefined"/>).
 /// </summary>
 public struct TargetInfo
 {
+    /// <summary>Creates an empty report: ids 0, radius and quantum 0, both positions cell 0 with the identity frame,
+    /// status <see cref="TargetStatus.Undefined"/>.</summary>
+    // retail: TargetInfo::TargetInfo (acclient.c:328026)
+    public TargetInfo()
+    {
+        ContextId = 0;
+        ObjectId = 0;
+        Radius = 0f;
+        Quantum = 0.0;
+        TargetPosition = new Position(0, Frame.Identity);
+        InterpolatedPosition = new Position(0, Frame.Identity);
+        InterpolatedHeading = Vector3.Zero;
+        Velocity = Vector3.Zero;
+        Status = TargetStatus.Undefined;
+        LastUpdateTime = 0.0;
+    }
+
     /// <summary>Tracking context; retail forwards only context 0 to the managers.</summary>
     public uint ContextId;
 
     /// <summary>Id of the tracked object.</summary>
     public uint ObjectId;
 
+    /// <summary>Distance the target must move (from the last position sent) before the next report, metres.</summary>
+    public float Radius;
+
+    /// <summary>Look-ahead of the reported interpolated position, seconds (retail <c>quantum</c>).</summary>
+    public double Quantum;
+
     /// <summary>Tracking status.</summary>
     public TargetStatus Status;
 
     /// <summary>The target's current position.</summary>
     public Position TargetPosition;
-}
 
-/// <summary>
-/// Client seam for the target tracking the sticky manager asks for (retail <c>CPhysicsObj::set_target</c> /
-/// <c>clear_target</c>, which reach the TargetManager). Called on the update path; must not allocate.
-/// </summary>
-public interface ITargetTracker
-{
-    /// <summary>Start tracking <paramref name="objectId"/> for <paramref name="obj"/>.</summary>
-    // retail caller: CPhysicsObj::set_target (acclient.c:315991)
-    void SetTarget(PhysicsObj obj, uint contextId, uint objectId, float radius, double quantum);
+    /// <summary>The target's position <see cref="Quantum"/> seconds ahead at its current velocity (retail
+    /// <c>interpolated_position</c>).</summary>
+    public Position InterpolatedPosition;
 
-    /// <summary>Stop tracking for <paramref name="obj"/>.</summary>
-    // retail caller: CPhysicsObj::clear_target (acclient.c:316011)
-    void ClearTarget(PhysicsObj obj);
+    /// <summary>Unit direction from the tracking object to <see cref="InterpolatedPosition"/> ((0, 0, 1) when they
+    /// coincide), set by the tracker on receipt (retail <c>interpolated_heading</c>).</summary>
+    public Vector3 InterpolatedHeading;
+
+    /// <summary>The target's velocity when the report was sent, m/s.</summary>
+    public Vector3 Velocity;
+
+    /// <summary>Client time the tracker last received a report, seconds (retail <c>last_update_time</c>).</summary>
+    public double LastUpdateTime;
 }

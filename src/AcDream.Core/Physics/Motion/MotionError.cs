@@ -15,6 +15,10 @@ public enum MotionError : uint
     /// <summary>The interpreter has no physics object (8).</summary>
     NoPhysicsObject = 8,
 
+    /// <summary>The object's movement manager is not the retail one, so it has no motion interpreter to play a move-to's
+    /// motions (0xB). Retail <c>WeenieError::NoMotionInterpreter</c>, from <c>MoveToManager::_DoMotion</c>.</summary>
+    NoMotionInterpreter = 0xB,
+
     /// <summary>The object is in the air and may not move or jump (0x24).</summary>
     YouCantJumpWhileInTheAir = 0x24,
 
@@ -33,8 +37,20 @@ public enum MotionError : uint
     /// <summary>The action was cancelled: the error a move-to is cancelled with when the object unsticks (0x36).</summary>
     ActionCancelled = 0x36,
 
+    /// <summary>The target of a running move-to or turn-to left (a report with a status other than Ok after the first,
+    /// 0x37). Retail <c>WeenieError::ObjectGone</c>, from <c>MoveToManager::HandleUpdateTarget</c>.</summary>
+    ObjectGone = 0x37,
+
+    /// <summary>The target of a move-to or turn-to was never found (its first report is not Ok, e.g. timed out: 0x38).
+    /// Retail <c>WeenieError::NoObject</c>, from <c>MoveToManager::HandleUpdateTarget</c>.</summary>
+    NoObject = 0x38,
+
     /// <summary>The object teleported: the error a move-to is cancelled with on a teleport (0x3C).</summary>
     ITeleported = 0x3C,
+
+    /// <summary>A move-to went farther than its fail distance from where it started (0x3D). Retail
+    /// <c>WeenieError::YouChargedTooFar</c>, from <c>MoveToManager::HandleMoveToPosition</c>.</summary>
+    YouChargedTooFar = 0x3D,
 
     /// <summary>The motion table has no link, cycle or modifier for the requested motion (0x43). Retail
     /// <c>WeenieError::NoMtableData</c>, returned by <c>MotionTableManager::PerformMovement</c> (acclient.c:330205) when

@@ -117,7 +117,7 @@ public sealed partial class MotionInterp
     // The body of DoInterpretedMotion, for apply_interpreted_movement: its parameters are retail's defaults with the interpreted
     // state's speeds (finite by their setters), so the tick's path runs no argument check.
     // retail: CMotionInterp::DoInterpretedMotion (acclient.c:343974)
-    private MotionError DoInterpretedMotionUnchecked(MotionCommand motion, in MovementParameters p)
+    internal MotionError DoInterpretedMotionUnchecked(MotionCommand motion, in MovementParameters p)
     {
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
@@ -207,7 +207,7 @@ public sealed partial class MotionInterp
     // The body of StopInterpretedMotion, for apply_interpreted_movement: its parameters are retail's defaults with the interpreted
     // state's speeds (finite by their setters), so the tick's path runs no argument check.
     // retail: CMotionInterp::StopInterpretedMotion (acclient.c:344033)
-    private MotionError StopInterpretedMotionUnchecked(MotionCommand motion, in MovementParameters p)
+    internal MotionError StopInterpretedMotionUnchecked(MotionCommand motion, in MovementParameters p)
     {
         PhysicsObj? obj = _physicsObj;
         if (obj is null)

@@ -1,4 +1,5 @@
 using System;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Physics.Motion;
 
@@ -71,7 +72,7 @@ public enum MovementParameterFlags : uint
 /// <c>DoInterpretedMotion</c>, <c>StopInterpretedMotion</c>, the states' <c>ApplyMotion</c>) refuses it with an
 /// <see cref="System.ArgumentException"/>. A value with any field set is accepted (speed 0 and no flags are legal alone).
 /// </summary>
-public struct MovementParameters
+public partial struct MovementParameters
 {
     /// <summary>Retail's default flags: walk, run, side-step, walk backwards, move towards, use spheres, set hold key,
     /// modify raw and interpreted state, cancel move-to, stop completely (<c>0x1EE0F</c>).</summary>

@@ -109,7 +109,11 @@ public sealed partial class PhysicsObj
         PositionManager?.StopSticking();
         PositionManager?.StopInterpolating();
         PositionManager?.StopConstraining();
-        TargetManager?.ClearTarget();
+        if (TargetManager is { } tm)
+        {
+            tm.ClearTarget();
+            tm.NotifyVoyeurOfEvent(Managers.TargetStatus.Teleported);
+        }
         World.Sweep.ReportCollisionEnd(this, true);
     }
 }

@@ -81,21 +81,16 @@ public sealed partial class PhysicsObj
         return result;
     }
 
-    /// <summary>Passes a target-tracking report (context 0 only) to the position manager.</summary>
+    /// <summary>Passes a target-tracking report (context 0 only) to the movement manager (a move-to or turn-to the target)
+    /// and the position manager (a stick). The object's <see cref="TargetManager"/> does this for the reports it receives;
+    /// a client may pass its own.</summary>
     /// <param name="info">The report.</param>
-    /// <remarks>Retail also forwards it to the movement manager, whose seam here has no such entry.</remarks>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::HandleUpdateTarget (acclient.c:319966)
     public void HandleUpdateTarget(in TargetInfo info)
     {
         ThrowIfRemoved();
-        Touch();
-        if (info.ContextId != 0)
-        {
-            return;
-        }
-
-        PositionManager?.HandleUpdateTarget(info);
+        HandleUpdateTargetInternal(info);
     }
 
     /// <summary>

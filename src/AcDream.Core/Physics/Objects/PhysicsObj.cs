@@ -118,7 +118,8 @@ public sealed partial class PhysicsObj
     public Vector3 Omega => _omega;
 
     /// <summary>Displacement of the last swept step divided by its duration, m/s (retail <c>cached_velocity</c>);
-    /// zero after a step that did not sweep.</summary>
+    /// zero after a step that did not sweep. Retail <c>CPhysicsObj::get_velocity</c> answers it.</summary>
+    // retail: CPhysicsObj::get_velocity (acclient.c:318565)
     public Vector3 CachedVelocity { get; private set; }
 
     /// <summary>Client time of the object's last consumed update, seconds (retail <c>update_time</c>).</summary>
@@ -220,7 +221,8 @@ public sealed partial class PhysicsObj
     /// <summary>Set when the velocity was changed this frame (retail <c>jumped_this_frame</c>); cleared at each active step.</summary>
     public bool JumpedThisFrame { get; private set; }
 
-    /// <summary>Whether the last move was autonomous (retail <c>last_move_was_autonomous</c>).</summary>
+    /// <summary>Whether the last move was autonomous (retail <c>last_move_was_autonomous</c>; read by
+    /// <c>CPhysicsObj::movement_is_autonomous</c>).</summary>
     /// <exception cref="InvalidOperationException">Set on an object removed from its world.</exception>
     public bool LastMoveWasAutonomous
     {
@@ -309,18 +311,9 @@ public sealed partial class PhysicsObj
         }
     }
 
-    /// <summary>Target manager seam, or null.</summary>
-    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
-    public ITargetManager? TargetManager
-    {
-        get => _rare?.TargetManager;
-        set
-        {
-            ThrowIfRemoved();
-            Touch();
-            Rare(value is not null)?.TargetManager = value;
-        }
-    }
+    /// <summary>The object's target tracking (retail <c>target_manager</c>), or null until the object first tracks a target or
+    /// is tracked (a move-to or turn-to an object, a stick).</summary>
+    public Managers.TargetManager? TargetManager => _rare?.TargetManager;
 
     /// <summary>Particle manager seam, or null (runs for inactive objects too).</summary>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
@@ -391,7 +384,7 @@ public sealed partial class PhysicsObj
     private sealed class RareComponents
     {
         public IDetectionManager? DetectionManager;
-        public ITargetManager? TargetManager;
+        public Managers.TargetManager? TargetManager;
         public IParticleManager? ParticleManager;
         public IScriptManager? ScriptManager;
         public Extrapolation? Extrapolation;

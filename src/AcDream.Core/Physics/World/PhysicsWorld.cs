@@ -229,6 +229,8 @@ public sealed partial class PhysicsWorld
             throw new ArgumentException("The object is not in this world.", nameof(obj));
         }
 
+        // retail: exit_world's target lines (acclient.c line 322204): the object stops tracking and its voyeurs are told
+        obj.NotifyTargetExitWorld();
         if (obj == _player)
         {
             Scene.WakeGatedDormant();

@@ -37,6 +37,12 @@ public interface IMovementManager
     {
     }
 
+    /// <summary>A report of the object's tracked target (retail <c>MovementManager::HandleUpdateTarget</c>, reached from
+    /// <c>CPhysicsObj::HandleUpdateTarget</c>): the retail manager passes it to its move-to manager.</summary>
+    void HandleUpdateTarget(in Managers.TargetInfo info)
+    {
+    }
+
     /// <summary>The part array's motion table finished <paramref name="motion"/> (retail <c>MovementManager::MotionDone</c>,
     /// reached from <c>CPhysicsObj::MotionDone</c>).</summary>
     void MotionDone(Motion.MotionCommand motion, bool success)
@@ -66,19 +72,6 @@ public interface IDetectionManager
 {
     /// <summary>Per-step detection check.</summary>
     void CheckDetection();
-}
-
-/// <summary>Seam to an object's target manager (retail <c>TargetManager::HandleTargetting</c>).</summary>
-public interface ITargetManager
-{
-    /// <summary>Per-step targeting update.</summary>
-    void HandleTargetting();
-
-    /// <summary>Drops the current target and tells voyeurs the object teleported (retail <c>ClearTarget</c> +
-    /// <c>NotifyVoyeurOfEvent(Teleported)</c>).</summary>
-    void ClearTarget()
-    {
-    }
 }
 
 /// <summary>Seam to an object's particle manager (retail <c>ParticleManager::UpdateParticles</c>).</summary>

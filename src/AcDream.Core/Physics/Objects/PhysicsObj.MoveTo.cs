@@ -1,0 +1,237 @@
+using System;
+using AcDream.Core.Physics.Managers;
+using AcDream.Core.Physics.Motion;
+
+namespace AcDream.Core.Physics.Objects;
+
+// The object's side of the move-to manager and of target tracking: the wrappers that look a target up in the world and hand
+// the movement manager a request, and the calls TargetManager makes on objects.
+public sealed partial class PhysicsObj
+{
+    /// <summary>
+    /// Walks or runs to object <paramref name="objectId"/> of this world and follows it (see
+    /// <see cref="Motion.MovementManager.MoveToObject"/>): its radius and height, and the object tracked (the one it is
+    /// attached to, else itself), come from the world's object table. The movement manager is created first (in its default
+    /// state) when absent; an id the world does not hold does nothing more. Retail <c>CPhysicsObj::MoveToObject</c>.
+    /// </summary>
+    /// <param name="objectId">The target's id: any value (one the world does not hold moves nothing).</param>
+    /// <param name="p">The parameters: every float finite, not <c>default(MovementParameters)</c>.</param>
+    /// <remarks>An object whose movement manager is a client's own (<see cref="Seams.IMovementManager"/>) has no move-to
+    /// manager: nothing moves.</remarks>
+    /// <exception cref="ArgumentException">The parameters are refused; nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
+    // retail: CPhysicsObj::MoveToObject (acclient.c:319766)
+    public void MoveToObject(uint objectId, in MovementParameters p)
+    {
+        ThrowIfRemoved();
+        p.CheckFiniteForMoveTo(nameof(p));
+        Touch();
+        MakeMovementManager(true);
+        PhysicsObj? found = World.GetObjectById(objectId);
+        if (found is null)
+        {
+            return;
+        }
+
+        float height = found.PartArray is not null ? found.PartArray.Height : 0f;
+        float radius = found.PartArray is not null ? found.PartArray.Radius : 0f;
+        PhysicsObj top = found.Parent ?? found;
+        MoveToObjectInternal(objectId, top.Id, radius, height, p);
+    }
+
+    /// <summary>Hands the movement manager a move-to-object request (type 6), creating it first when absent.</summary>
+    // retail: CPhysicsObj::MoveToObject_Internal (acclient.c:317482)
+    internal void MoveToObjectInternal(uint objectId, uint topLevelId, float radius, float height, in MovementParameters p)
+    {
+        if (MakeMovementManager(true) is not Motion.MovementManager mm)
+        {
+            return;
+        }
+
+        MovementStruct mvs = MovementStruct.Of(MovementType.MoveToObject, p);
+        mvs.TopLevelId = topLevelId;
+        mvs.Radius = radius;
+        mvs.ObjectId = objectId;
+        mvs.Height = height;
+        mm.PerformMovement(mvs);
+    }
+
+    /// <summary>
+    /// Turns to face object <paramref name="objectId"/> of this world (see <see cref="Motion.MovementManager.TurnToObject"/>);
+    /// the object tracked is the one it is attached to, else itself. An id the world does not hold does nothing. Retail
+    /// <c>CPhysicsObj::TurnToObject</c>.
+    /// </summary>
+    /// <param name="objectId">The target's id: any value.</param>
+    /// <param name="p">The parameters: every float finite, not <c>default(MovementParameters)</c>.</param>
+    /// <exception cref="ArgumentException">The parameters are refused; nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
+    // retail: CPhysicsObj::TurnToObject (acclient.c:319827)
+    public void TurnToObject(uint objectId, in MovementParameters p)
+    {
+        ThrowIfRemoved();
+        p.CheckFiniteForMoveTo(nameof(p));
+        Touch();
+        PhysicsObj? found = World.GetObjectById(objectId);
+        if (found is null)
+        {
+            return;
+        }
+
+        PhysicsObj top = found.Parent ?? found;
+        TurnToObjectInternal(objectId, top.Id, p);
+    }
+
+    /// <summary>Hands the movement manager a turn-to-object request (type 8), creating it first when absent.</summary>
+    // retail: CPhysicsObj::TurnToObject_Internal (acclient.c:317532)
+    internal void TurnToObjectInternal(uint objectId, uint topLevelId, in MovementParameters p)
+    {
+        if (MakeMovementManager(true) is not Motion.MovementManager mm)
+        {
+            return;
+        }
+
+        MovementStruct mvs = MovementStruct.Of(MovementType.TurnToObject, p);
+        mvs.ObjectId = objectId;
+        mvs.TopLevelId = topLevelId;
+        mm.PerformMovement(mvs);
+    }
+
+    /// <summary>Turns to <see cref="MovementParameters.DesiredHeading"/> (see
+    /// <see cref="Motion.MovementManager.TurnToHeading"/>), creating the movement manager first when absent. Retail
+    /// <c>CPhysicsObj::TurnToHeading</c>.</summary>
+    /// <param name="p">The parameters: every float finite, not <c>default(MovementParameters)</c>.</param>
+    /// <exception cref="ArgumentException">The parameters are refused; nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
+    // retail: CPhysicsObj::TurnToHeading (acclient.c:319850)
+    public void TurnToHeading(in MovementParameters p)
+    {
+        ThrowIfRemoved();
+        p.CheckFiniteForMoveTo(nameof(p));
+        Touch();
+        if (MakeMovementManager(true) is not Motion.MovementManager mm)
+        {
+            return;
+        }
+
+        mm.PerformMovement(MovementStruct.Of(MovementType.TurnToHeading, p));
+    }
+
+    /// <summary>Stops everything: the movement manager's stop-completely request (type 5; its interpreter cancels a running
+    /// move-to and stops every motion), when the object has a retail movement manager. Retail
+    /// <c>CPhysicsObj::StopCompletely</c>.</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
+    public void StopCompletely()
+    {
+        ThrowIfRemoved();
+        Touch();
+        StopCompletelyUnchecked();
+    }
+
+    /// <summary>The engine's stop-completely (the move-to manager's), without the removed-object check.</summary>
+    // retail: CPhysicsObj::StopCompletely (acclient.c:317392)
+    internal void StopCompletelyUnchecked()
+    {
+        if (Movement is Motion.MovementManager mm)
+        {
+            mm.PerformMovement(MovementStruct.Of(MovementType.StopCompletely, new MovementParameters()));
+        }
+    }
+
+    /// <summary>True while the motion interpreter has unfinished motions.</summary>
+    // retail: CPhysicsObj::motions_pending (acclient.c:315778)
+    internal bool MotionsPending() => Movement is Motion.MovementManager mm && mm.MotionsPending();
+
+    /// <summary>The compass heading the object faces, degrees (the x87 double of <c>Frame::get_heading</c>).</summary>
+    // retail: CPhysicsObj::get_heading (acclient.c:318634)
+    internal double GetHeading() => _position.Frame.Heading;
+
+    /// <summary>The position manager, created when absent.</summary>
+    // retail: CPhysicsObj::get_position_manager (acclient.c:319308)
+    internal PositionManager GetPositionManager() => MakePositionManager();
+
+    /// <summary>Unsticks (the engine's <c>unstick_from_object</c>; <see cref="StopSticking"/> is the public one).</summary>
+    internal void UnstickFromObject() => PositionManager?.StopSticking();
+
+    /// <summary>Turns the object to <paramref name="degrees"/> (the engine's <c>set_heading</c>; the heading is finite).</summary>
+    internal void SetHeadingUnchecked(float degrees)
+    {
+        Touch();
+        Spatial.Frame f = _position.Frame;
+        f.SetHeading(degrees);
+        SetFrameInternal(f);
+    }
+
+    /// <summary>Starts tracking object <paramref name="objectId"/> (creating the target manager).</summary>
+    // retail: CPhysicsObj::set_target (acclient.c:315991)
+    internal void SetTarget(uint contextId, uint objectId, float radius, double quantum)
+    {
+        Touch();
+        RareTargetManager().SetTarget(contextId, objectId, radius, quantum);
+    }
+
+    /// <summary>Stops tracking the target.</summary>
+    // retail: CPhysicsObj::clear_target (acclient.c:316011)
+    internal void ClearTarget() => TargetManager?.ClearTarget();
+
+    /// <summary>Sets the tracked target's report look-ahead, seconds.</summary>
+    // retail: CPhysicsObj::set_target_quantum (acclient.c:316021)
+    internal void SetTargetQuantum(double newQuantum) => TargetManager?.SetTargetQuantum(newQuantum);
+
+    /// <summary>The tracked target's report look-ahead, seconds (0 without a target).</summary>
+    // retail: CPhysicsObj::get_target_quantum (acclient.c:316031)
+    internal double TargetQuantum => TargetManager is { HasTarget: true } tm ? tm.TargetInfo.Quantum : 0.0;
+
+    /// <summary>A report of the tracked target, from the target's manager.</summary>
+    // retail: CPhysicsObj::receive_target_update (acclient.c:316046)
+    internal void ReceiveTargetUpdate(in TargetInfo info)
+    {
+        Touch();
+        TargetManager?.ReceiveUpdate(info);
+    }
+
+    /// <summary>Registers object <paramref name="objectId"/> as tracking this one (creating the target manager).</summary>
+    // retail: CPhysicsObj::add_voyeur (acclient.c:316056)
+    internal void AddVoyeur(uint objectId, float radius, float quantum)
+    {
+        Touch();
+        RareTargetManager().AddVoyeur(objectId, radius, quantum);
+    }
+
+    /// <summary>Unregisters a voyeur.</summary>
+    /// <returns>True when it was registered.</returns>
+    // retail: CPhysicsObj::remove_voyeur (acclient.c:316076)
+    internal bool RemoveVoyeur(uint objectId) => TargetManager is not null && TargetManager.RemoveVoyeur(objectId);
+
+    private TargetManager RareTargetManager()
+    {
+        RareComponents rare = Rare(true)!;
+        return rare.TargetManager ??= new TargetManager(this);
+    }
+
+    /// <summary>Passes a report (context 0 only) to the movement manager (its move-to) and the position manager (its stick).
+    /// The engine's <see cref="HandleUpdateTarget"/>.</summary>
+    internal void HandleUpdateTargetInternal(in TargetInfo info)
+    {
+        Touch();
+        if (info.ContextId != 0)
+        {
+            return;
+        }
+
+        Movement?.HandleUpdateTarget(info);
+        PositionManager?.HandleUpdateTarget(info);
+    }
+
+    /// <summary>The object leaves the world: its target tracking stops and its voyeurs are told
+    /// (<see cref="TargetStatus.ExitWorld"/>), so a move-to onto it cancels and a stick to it ends.</summary>
+    // retail part: the target manager's lines of CPhysicsObj::exit_world (acclient.c line 322204)
+    internal void NotifyTargetExitWorld()
+    {
+        TargetManager? tm = TargetManager;
+        if (tm is not null)
+        {
+            tm.ClearTarget();
+            tm.NotifyVoyeurOfEvent(TargetStatus.ExitWorld);
+        }
+    }
+}
