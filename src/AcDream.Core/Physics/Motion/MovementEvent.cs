@@ -62,12 +62,42 @@ public static class MovementEvent
                 MoveToState(mm, obj, m.State, m.StickToObject, m.StandingLongJump);
                 return true;
             case MovementEventType.MoveToObject:
-            case MovementEventType.MoveToPosition:
+                // acclient.c:339564-339578: an object this client does not know is moved to at its origin instead.
+                mm.MakeMoveToManager();
                 mm.GetOrCreateMotionInterpreter().MyRunRate = m.RunRate;
-                return MoveToSeam.Dispatch(mm, obj, m);
+                if (obj.World.GetObjectById(m.TargetId) is not null)
+                {
+                    obj.MoveToObject(m.TargetId, m.Parameters);
+                }
+                else
+                {
+                    mm.MakeMoveToManager().MoveToPosition(m.Origin, m.Parameters);
+                }
+
+                return true;
+            case MovementEventType.MoveToPosition:
+                mm.MakeMoveToManager();
+                mm.GetOrCreateMotionInterpreter().MyRunRate = m.RunRate;
+                mm.MakeMoveToManager().MoveToPosition(m.Origin, m.Parameters);
+                return true;
             case MovementEventType.TurnToObject:
+                // acclient.c:339592-339606: an unknown object is turned to at the event's heading instead.
+                mm.MakeMoveToManager();
+                if (obj.World.GetObjectById(m.TargetId) is not null)
+                {
+                    obj.TurnToObject(m.TargetId, m.Parameters);
+                }
+                else
+                {
+                    MovementParameters p = m.Parameters;
+                    p.DesiredHeading = m.TurnToObjectHeading;
+                    mm.MakeMoveToManager().TurnToHeading(p);
+                }
+
+                return true;
             case MovementEventType.TurnToHeading:
-                return MoveToSeam.Dispatch(mm, obj, m);
+                mm.MakeMoveToManager().TurnToHeading(m.Parameters);
+                return true;
             default:
                 return false;
         }

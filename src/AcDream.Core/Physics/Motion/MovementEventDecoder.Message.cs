@@ -125,26 +125,12 @@ public static partial class MovementEventDecoder
         return new Position(cell, new Vector3(x, y, z));
     }
 
-    /// <summary>The move-to (types 6, 7) or turn-to (8, 9) parameters as the network sends them; the fields not sent keep
-    /// retail's defaults (<c>new MovementParameters()</c>).</summary>
-    // retail: MovementParameters::UnPackNet (acclient.c:346343)
+    // The move-to (types 6, 7) or turn-to (8, 9) parameters as the network sends them (MovementParameters::UnPackNet); the
+    // fields not sent keep retail's defaults.
     private static MovementParameters UnpackNet(ref RetailDataReader r, MovementEventType type)
     {
-        var p = new MovementParameters { Flags = (MovementParameterFlags)r.ReadUInt32("parameter flags") };
-        if (type is MovementEventType.MoveToObject or MovementEventType.MoveToPosition)
-        {
-            p.DistanceToObject = r.ReadFiniteSingle("distance to object");
-            p.MinDistance = r.ReadFiniteSingle("min distance");
-            p.FailDistance = r.ReadFiniteSingle("fail distance");
-            p.Speed = r.ReadFiniteSingle("speed");
-            p.WalkRunThreshold = r.ReadFiniteSingle("walk/run threshold");
-        }
-        else
-        {
-            p.Speed = r.ReadFiniteSingle("speed");
-        }
-
-        p.DesiredHeading = r.ReadFiniteSingle("desired heading");
+        var p = new MovementParameters();
+        p.UnPackNet(ref r, (MovementType)type);
         return p;
     }
 }

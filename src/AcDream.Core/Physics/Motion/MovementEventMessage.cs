@@ -2,8 +2,9 @@ using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Motion;
 
-/// <summary>The kind of movement a MovementEvent carries (the first byte of its movement data; retail
-/// <c>MovementTypes::Type</c> as <c>MovementManager::unpack_movement</c> switches on it).</summary>
+/// <summary>The kind of movement a MovementEvent carries: the first byte of its movement data, on which retail's
+/// <c>MovementManager::unpack_movement</c> switches. Types 6-9 are <see cref="MovementType"/>'s values; the wire's 0 is an
+/// interpreted motion state (where <see cref="MovementType"/>'s 0 is <see cref="MovementType.Invalid"/>).</summary>
 public enum MovementEventType : byte
 {
     /// <summary>0: an interpreted motion state (walk, run, side-step, turn, actions).</summary>

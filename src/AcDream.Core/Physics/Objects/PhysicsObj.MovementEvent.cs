@@ -33,8 +33,8 @@ public sealed partial class PhysicsObj
     // retail: CPhysics::SetObjectMovement (acclient.c:311148)
     public MovementEventResult HandleMovementEvent(MovementEventMessage message)
     {
-        ArgumentNullException.ThrowIfNull(message);
         ThrowIfRemoved();
+        ArgumentNullException.ThrowIfNull(message);
         CheckMovementEvent(message);
         bool isThePlayer = Weenie is IMotionWeenie { IsThePlayer: true };
         if (!NewerEvent(PhysicsTimeStamp.Movement, message.MovementTimestamp))
@@ -113,6 +113,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::unpack_movement (acclient.c:319253)
     private bool UnpackMovement(MovementEventMessage message)
     {
+        Touch();
         if (Movement is null)
         {
             // non-retail: retail creates the manager without an interpreter here, and MovementManager::unpack_movement then
@@ -135,8 +136,9 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::DoMotion (acclient.c:317314)
     public MotionError DoMotion(MotionCommand motion, in MovementParameters p)
     {
-        MotionChecks.Check(p);
         ThrowIfRemoved();
+        MotionChecks.Check(p);
+        Touch();
         _lastMoveWasAutonomous = true;
         return Movement is null ? MotionError.NoMotionTable : RetailMovement().DoMotion(motion, p);
     }
@@ -152,8 +154,9 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::StopMotion (acclient.c:317353)
     public MotionError StopMotion(MotionCommand motion, in MovementParameters p)
     {
-        MotionChecks.Check(p);
         ThrowIfRemoved();
+        MotionChecks.Check(p);
+        Touch();
         _lastMoveWasAutonomous = true;
         return Movement is null ? MotionError.NoMotionTable : RetailMovement().StopMotion(motion, p);
     }
