@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Generic;
+using System.Linq;
 using System.Globalization;
 using System.IO;
 using AcDream.Core.Physics.Motion;
@@ -112,25 +114,101 @@ public class MeleeReplayTests(ITestOutputHelper output)
     }
 
     [MeleeDataFact]
-    public void Probe()
+    public void PlayerApproach_WithMoveTo_FollowsItsOwnClient_AndStopsWhereRetailStopped()
     {
         MeleeRecording rec = MeleeRecording.Load(Dir);
-        foreach (MeleeMode mode in new[] { MeleeMode.MoveToApplied, MeleeMode.MoveToIgnored, MeleeMode.InterpolationOnly })
-        {
-            MeleeReplayResult r = MeleeReplay.Run(rec, mode);
-            output.WriteLine($"{mode}: results {string.Join(",", r.Results)}");
-            foreach (MeleeApproach a in MeleeReplay.Approaches(rec, r))
-            {
-                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  {a}"));
-            }
+        List<MeleeApproach> applied = SharedPart(MeleeReplay.Approaches(rec, MeleeReplay.Run(rec, MeleeMode.MoveToApplied)));
+        List<MeleeApproach> ignored = SharedPart(MeleeReplay.Approaches(rec, MeleeReplay.Run(rec, MeleeMode.MoveToIgnored)));
+        // The shared part holds the four MoveToObjects onto the Chicken (t 19.21, 25.52, 32.57, 39.83).
+        Assert.Equal(4, applied.Count);
+        Assert.Equal(4, ignored.Count);
 
-            foreach (uint g in new[] { MeleeRecording.Chicken, MeleeRecording.TheChicken })
+        // Tolerance. (1) One replay tick of the charge: the event lands up to 1/30 s before the tick that starts the run,
+        // at RunAnimSpeed 4.0 x run rate 1.45833337 (the event's) x speed 1.5 (the event's) = 8.75 m/s: 0.2917 m.
+        var m = new MovementEventMessage();
+        MovementEventDecoder.Decode(rec.PlayerMoveToObjects()[0].Body, m);
+        double tick = MotionInterp.RunAnimSpeed * m.RunRate * m.Parameters.Speed * MeleeReplay.Dt;
+        // (2) The glide retail's client plays after a run stops (the run-to-ready link animation moves it on), which the
+        // stand-in motion table (RetailSpeedMotionTable) does not: measured on first-login-walk-jump, the same retail
+        // client's stop pose to its pose 1 s later (0.7884 m, both runs).
+        double glide = StopGlide(Dir);
+        double bound = glide + tick;
+        double fail = m.Parameters.FailDistance;
+        for (int k = 0; k < 4; k++)
+        {
+            MeleeApproach a = applied[k], n = ignored[k];
+            output.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"approach {k + 1} at {a.Start:F2}: applied median {a.Median:F3} max {a.Max:F3}, ignored median {n.Median:F3} max {n.Max:F3}; "
+                + $"stop to target retail {a.RetailStopDistance:F2} body {a.StopDistance:F2} (ignored {n.StopDistance:F2}); "
+                + $"travel retail {a.RetailTravel:F2} body {a.Travel:F2}; bound {bound:F3}"));
+            Assert.True(a.Median < n.Median && a.Max < n.Max, "MoveTo applied is closer to the own client's poses than ignored");
+            Assert.InRange(a.Max, 0.0, bound);
+            // Each approach ends by its fail distance (15 m from the start, CheckProgressMade/HandleMoveToPosition), within
+            // the tick that crosses it; retail's client went on by its glide.
+            Assert.InRange(a.Travel, fail, fail + tick);
+            Assert.InRange(a.RetailTravel - a.Travel, 0.0, bound);
+            Assert.InRange(Math.Abs(a.StopDistance - a.RetailStopDistance), 0.0, bound);
+            // Ignoring the MoveTo leaves the body at the start: off by the whole approach.
+            Assert.True(n.Max > fail);
+        }
+    }
+
+    [MeleeDataFact]
+    public void MonsterPrediction_WithMoveToPosition_BeatsInterpolationOnly()
+    {
+        MeleeRecording rec = MeleeRecording.Load(Dir);
+        MeleeReplayResult applied = MeleeReplay.Run(rec, MeleeMode.MoveToApplied, SharedEnd);
+        MeleeReplayResult ignored = MeleeReplay.Run(rec, MeleeMode.MoveToIgnored, SharedEnd);
+        MeleeReplayResult interp = MeleeReplay.Run(rec, MeleeMode.InterpolationOnly, SharedEnd);
+        foreach (uint g in new uint[] { MeleeRecording.Chicken, MeleeRecording.TheChicken, 0 })
+        {
+            var a = MeleeReplay.MonsterStats(applied, g);
+            var n = MeleeReplay.MonsterStats(ignored, g);
+            var i = MeleeReplay.MonsterStats(interp, g);
+            output.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"0x{g:X8}: n {a.Count}; MoveToPosition applied median {a.Median:F3} mean {a.Mean:F3} max {a.Max:F3}; "
+                + $"type 0 only {n.Median:F3} / {n.Mean:F3} / {n.Max:F3}; interpolation only {i.Median:F3} / {i.Mean:F3} / {i.Max:F3}"));
+        }
+
+        // Both monsters together, and The Chicken (speed 1, walking at about the stand-in table's 3.12 m/s) alone: the body
+        // moved by its MoveToPosition is nearer each next report than the body that only follows the reports.
+        var all = MeleeReplay.MonsterStats(applied, 0);
+        var allInterp = MeleeReplay.MonsterStats(interp, 0);
+        Assert.True(all.Count >= 70);
+        Assert.True(all.Mean < allInterp.Mean);
+        Assert.True(all.Median < allInterp.Median);
+        var theChicken = MeleeReplay.MonsterStats(applied, MeleeRecording.TheChicken);
+        var theChickenInterp = MeleeReplay.MonsterStats(interp, MeleeRecording.TheChicken);
+        Assert.True(theChicken.Mean < theChickenInterp.Mean);
+        Assert.True(theChicken.Max < theChickenInterp.Max);
+        // The type-0 events alone (emotes, Ready) do not move a monster: the same as interpolation only for the Chicken.
+        Assert.Equal(MeleeReplay.MonsterStats(interp, MeleeRecording.Chicken).Mean, MeleeReplay.MonsterStats(ignored, MeleeRecording.Chicken).Mean);
+    }
+
+    /// <summary>End of the shared part of the recording, s.</summary>
+    private const double SharedEnd = 60.0;
+
+    private static List<MeleeApproach> SharedPart(List<MeleeApproach> all) => all.FindAll(a => a.Start < SharedEnd);
+
+    // first-login-walk-jump (same retail client): for each run stop (a MoveToState with raw flags 0x1 after one with 0x5),
+    // the distance from its pose to the next AutonomousPosition; the largest.
+    private static double StopGlide(string dir)
+    {
+        string path = Path.Combine(dir, "first-login-walk-jump_c2s_autonomous.csv");
+        Assert.True(File.Exists(path), "first-login-walk-jump is needed for the stop glide: " + path);
+        string[][] rows = File.ReadAllLines(path)[1..].Where(l => l.Length != 0).Select(l => l.Split(',')).ToArray();
+        double glide = 0;
+        for (int i = 1; i + 1 < rows.Length; i++)
+        {
+            if (rows[i][9] == "0xF61C" && rows[i][15] == "0x1" && rows[i - 1][15] == "0x5" && rows[i + 1][9] == "0xF753")
             {
-                var st = MeleeReplay.MonsterStats(r, g);
-                var mv = MeleeReplay.MonsterStats(r, g, true);
-                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  monster {g:X8}: all {st} moving {mv}"));
+                double dx = F(rows[i + 1][2]) - F(rows[i][2]), dy = F(rows[i + 1][3]) - F(rows[i][3]);
+                glide = Math.Max(glide, Math.Sqrt(dx * dx + dy * dy));
             }
         }
+
+        Assert.InRange(glide, 0.5, 1.0);
+        return glide;
     }
 
     private static float F(string s) => float.Parse(s, CultureInfo.InvariantCulture);
