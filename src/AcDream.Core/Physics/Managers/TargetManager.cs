@@ -33,9 +33,15 @@ public sealed class TargettedVoyeurInfo
 /// </summary>
 public sealed class TargetManager
 {
-    // Retail LongNIHash<TargettedVoyeurInfo> with 4 buckets (acclient.c:328326), each a list the newest entry is prepended to:
+    // Retail LongNIHash<TargettedVoyeurInfo> with 4 buckets (<c>AddVoyeur</c>), each a list the newest entry is prepended to:
     // kept here as one list in retail's iteration order (bucket, then newest first). Removed entries are pooled.
-    private const int VoyeurBuckets = 4;
+    internal const int VoyeurBuckets = 4;
+
+    /// <summary>Least physics time between two voyeur passes, seconds: 0.5 (<c>HandleTargetting</c>).</summary>
+    internal const double UpdateInterval = 0.5;
+
+    /// <summary>Client time a target may stay unanswered before it times out, seconds: 10.0 (<c>HandleTargetting</c>).</summary>
+    internal const double TargetTimeout = 10.0;
     private readonly List<TargettedVoyeurInfo> _voyeurs = new(4);
     private readonly Stack<TargettedVoyeurInfo> _freeVoyeurs = new();
     private TargetInfo _targetInfo;
@@ -273,13 +279,14 @@ public sealed class TargetManager
     // retail: TargetManager::HandleTargetting (acclient.c:328457)
     internal void HandleTargetting()
     {
-        PhysicsWorldClock(out double physicsTime, out double clientTime);
-        if (physicsTime - LastUpdateTime < 0.5)
+        double physicsTime = PhysicsObj.World.PhysicsTime;
+        double clientTime = PhysicsObj.World.CurrentTime;
+        if (physicsTime - LastUpdateTime < UpdateInterval)
         {
             return;
         }
 
-        if (_hasTarget && _targetInfo.Status == TargetStatus.Undefined && _targetInfo.LastUpdateTime + 10.0 < clientTime)
+        if (_hasTarget && _targetInfo.Status == TargetStatus.Undefined && _targetInfo.LastUpdateTime + TargetTimeout < clientTime)
         {
             _targetInfo.Status = TargetStatus.TimedOut;
             TargetInfo copy = _targetInfo;
@@ -300,12 +307,6 @@ public sealed class TargetManager
         }
 
         LastUpdateTime = PhysicsObj.World.PhysicsTime;
-    }
-
-    private void PhysicsWorldClock(out double physicsTime, out double clientTime)
-    {
-        physicsTime = PhysicsObj.World.PhysicsTime;
-        clientTime = PhysicsObj.World.CurrentTime;
     }
 
     /// <summary>

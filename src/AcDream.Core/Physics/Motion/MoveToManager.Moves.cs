@@ -27,7 +27,7 @@ public sealed partial class MoveToManager
             Initialized = false;
             if (topLevelId != obj.Id)
             {
-                obj.SetTarget(0, TopLevelObjectId, 0.5f, 0.0);
+                obj.SetTarget(0, TopLevelObjectId, TargetTrackRadius, TargetTrackQuantum);
                 return;
             }
 
@@ -60,7 +60,7 @@ public sealed partial class MoveToManager
             if (topLevelId != obj.Id)
             {
                 Initialized = false;
-                obj.SetTarget(0, topLevelId, 0.5f, 0.0);
+                obj.SetTarget(0, topLevelId, TargetTrackRadius, TargetTrackQuantum);
                 return;
             }
 

@@ -275,7 +275,7 @@ public sealed partial class MoveToManager
                 off += 360.0;
             }
 
-            if (off <= 20.0 || off >= 360.0 - 20.0)
+            if (off <= AuxTurnThreshold || off >= 360.0 - AuxTurnThreshold)
             {
                 if (AuxCommand != 0)
                 {
@@ -333,10 +333,10 @@ public sealed partial class MoveToManager
         if (TopLevelObjectId != 0 && MovementType != MovementType.Invalid)
         {
             double speed = ManagerMath.Magnitude(obj.CachedVelocity);
-            if (speed > 0.1)
+            if (speed > QuantumMinSpeed)
             {
                 double timeToGetThere = dist / speed;
-                if (Math.Abs(timeToGetThere - obj.TargetQuantum) > 1.0)
+                if (Math.Abs(timeToGetThere - obj.TargetQuantum) > QuantumChangeThreshold)
                 {
                     obj.SetTargetQuantum(timeToGetThere);
                 }

@@ -21,6 +21,27 @@ namespace AcDream.Core.Physics.Motion;
 /// </remarks>
 public sealed partial class MoveToManager
 {
+    /// <summary>Radius a move-to or turn-to tracks its target with, metres: 0.5 (<c>MoveToObject</c>, <c>TurnToObject</c>).</summary>
+    internal const float TargetTrackRadius = 0.5f;
+
+    /// <summary>Report look-ahead a move-to or turn-to starts tracking with, seconds: 0.0 (<c>MoveToObject</c>, <c>TurnToObject</c>).</summary>
+    internal const double TargetTrackQuantum = 0.0;
+
+    /// <summary>Heading error beyond which a move corrects with a turn, degrees: 20 (<c>HandleMoveToPosition</c>).</summary>
+    internal const double AuxTurnThreshold = 20.0;
+
+    /// <summary>Time between progress checks, seconds of client time: more than 1.0 (<c>CheckProgressMade</c>).</summary>
+    internal const double ProgressCheckInterval = 1.0;
+
+    /// <summary>Least closing (or opening) rate a move counts as progress, m/s: 0.25 (<c>CheckProgressMade</c>).</summary>
+    internal const double MinProgressRate = 0.25;
+
+    /// <summary>Speed above which a move-to-object sets its target's report look-ahead, m/s: 0.1 (<c>HandleMoveToPosition</c>).</summary>
+    internal const double QuantumMinSpeed = 0.1;
+
+    /// <summary>Change of the time to get there that resets the look-ahead, seconds: more than 1.0 (<c>HandleMoveToPosition</c>).</summary>
+    internal const double QuantumChangeThreshold = 1.0;
+
     private readonly MoveToNodeList _pendingActions = new();
     private MovementParameters _movementParams;
 
@@ -317,11 +338,11 @@ public sealed partial class MoveToManager
     {
         double now = CurTime;
         double dt = now - PreviousDistanceTime;
-        if (dt > 1.0)
+        if (dt > ProgressCheckInterval)
         {
             bool away = MovingAway;
             double closed = away ? (double)currDistance - PreviousDistance : (double)PreviousDistance - currDistance;
-            if (closed / dt < 0.25)
+            if (closed / dt < MinProgressRate)
             {
                 return false;
             }
@@ -329,7 +350,7 @@ public sealed partial class MoveToManager
             PreviousDistance = currDistance;
             PreviousDistanceTime = now;
             double sinceStart = !away ? (double)OriginalDistance - currDistance : (double)currDistance - OriginalDistance;
-            if (sinceStart / (now - OriginalDistanceTime) < 0.25)
+            if (sinceStart / (now - OriginalDistanceTime) < MinProgressRate)
             {
                 return false;
             }

@@ -139,7 +139,8 @@ public partial struct MovementParameters
     /// <param name="bytesRead">Bytes consumed (28 or 12).</param>
     /// <returns>The parameters.</returns>
     /// <exception cref="ArgumentException"><paramref name="type"/> is not 6–9.</exception>
-    /// <exception cref="RetailDataFormatException">The data are shorter than the layout, or a float is NaN or infinite.</exception>
+    /// <exception cref="RetailDataFormatException">The data are shorter than the layout, a float is NaN or infinite, or the
+    /// speed is beyond ±<see cref="MaxMoveToSpeed"/>.</exception>
     public static MovementParameters UnPackNet(ReadOnlySpan<byte> data, MovementType type, out int bytesRead)
     {
         if (type < MovementType.MoveToObject || type > MovementType.TurnToHeading)
@@ -156,8 +157,8 @@ public partial struct MovementParameters
 
     /// <summary>Reads the wire layout of <paramref name="type"/> from <paramref name="r"/> (see <see cref="UnPackNet(ReadOnlySpan{byte}, MovementType, out int)"/>).</summary>
     /// <returns>False (nothing read) for a type other than 6–9, as retail.</returns>
-    /// <exception cref="RetailDataFormatException">Short data, or a float that is not finite (non-retail: the motion API
-    /// takes only finite values).</exception>
+    /// <exception cref="RetailDataFormatException">Short data, a float that is not finite, or a speed beyond
+    /// ±<see cref="MaxMoveToSpeed"/> (non-retail: the move-to API's domain).</exception>
     // retail: MovementParameters::UnPackNet (acclient.c:346343)
     internal bool UnPackNet(ref RetailDataReader r, MovementType type)
     {
@@ -197,6 +198,12 @@ public partial struct MovementParameters
         }
 
         DesiredHeading = r.ReadFiniteSingle("desired_heading");
+        // non-retail: the move-to API's speed bound, so that decoded parameters can go straight to the move-to manager
+        if (Math.Abs(Speed) > MaxMoveToSpeed)
+        {
+            throw r.Error($"speed {Speed} is beyond ±{MaxMoveToSpeed}");
+        }
+
         return true;
     }
 
@@ -296,10 +303,22 @@ public partial struct MovementParameters
         o += 4;
     }
 
-    /// <summary>Throws unless every float is finite (the move-to API's check; with <see cref="MotionChecks.Check"/>).</summary>
+    /// <summary>Largest speed multiplier a move-to takes, in magnitude: 100 (non-retail bound; the server sends 1, or 1.5 for a
+    /// melee charge). The move-to plays its walk, run and turns at this multiple of their speeds; a speed like 1e30 would
+    /// carry the body out of the position domain in one step.</summary>
+    public const float MaxMoveToSpeed = 100f;
+
+    /// <summary>Throws unless every float is finite and the speed is within ±<see cref="MaxMoveToSpeed"/> (the move-to API's
+    /// check; with <see cref="MotionChecks.Check"/>).</summary>
     internal readonly void CheckFiniteForMoveTo(string paramName)
     {
         MotionChecks.Check(this);
+        // non-retail: the speed's bound (see MaxMoveToSpeed)
+        if (Math.Abs(Speed) > MaxMoveToSpeed)
+        {
+            throw new ArgumentException("A move-to's speed must be within ±100.", paramName);
+        }
+
         if (!float.IsFinite(DistanceToObject) || !float.IsFinite(MinDistance) || !float.IsFinite(DesiredHeading)
             || !float.IsFinite(FailDistance) || !float.IsFinite(WalkRunThreshold))
         {

@@ -1,4 +1,5 @@
 using System;
+using AcDream.Core.Physics.Motion;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
@@ -170,6 +171,23 @@ internal static class BadValues
 
             yield return ("radius 0", new Sphere(new Vector3(0f, 0f, 0.5f), 0f));
         }
+        else if (t == typeof(MovementParameters))
+        {
+            yield return ("default(MovementParameters)", default(MovementParameters));
+            foreach ((string l, float f) in Floats)
+            {
+                var g = new MovementParameters();
+                yield return ("speed " + l, g with { Speed = f });
+                yield return ("distance_to_object " + l, g with { DistanceToObject = f });
+                yield return ("min_distance " + l, g with { MinDistance = f });
+                yield return ("fail_distance " + l, g with { FailDistance = f });
+                yield return ("walk_run_threshhold " + l, g with { WalkRunThreshold = f });
+                yield return ("desired_heading " + l, g with { DesiredHeading = f });
+            }
+
+            yield return ("every flag", new MovementParameters { Flags = (MovementParameterFlags)0xFFFFFFFFu });
+            yield return ("hold key 7", new MovementParameters { HoldKeyToApply = (HoldKey)7 });
+        }
         else if (t == typeof(TargetInfo))
         {
             var g = (TargetInfo)good!;
@@ -246,6 +264,7 @@ internal static class BadValues
         {
             _ when Nullable.GetUnderlyingType(t) is not null => null,
             _ when t == typeof(Sphere) => new Sphere(new Vector3(0f, 0f, 0.5f), 0.5f),
+            _ when t == typeof(MovementParameters) => new MovementParameters { DesiredHeading = 90f },
             _ when t == typeof(float) => 0.5f,
             _ when t == typeof(double) => 0.5,
             _ when t == typeof(int) => 0,
