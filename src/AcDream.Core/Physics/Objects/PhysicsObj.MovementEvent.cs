@@ -27,7 +27,8 @@ public sealed partial class PhysicsObj
     /// <returns>What happened (<see cref="MovementEventResult"/>).</returns>
     /// <exception cref="ArgumentNullException"><paramref name="message"/> is null.</exception>
     /// <exception cref="ArgumentException">The message is for another object, its type is not 0, 6, 7, 8 or 9, or (types
-    /// 6-9) its parameters are <c>default(MovementParameters)</c> or hold a NaN or infinite number, its run rate or heading is
+    /// 6-9) its parameters are <c>default(MovementParameters)</c>, hold a NaN or infinite number or a speed beyond
+    /// ±<see cref="MovementParameters.MaxMoveToSpeed"/>, its run rate or heading is
     /// not finite, or (types 6, 7) its origin is outside the position domain; nothing changes.</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysics::SetObjectMovement (acclient.c:311148)
@@ -99,13 +100,8 @@ public sealed partial class PhysicsObj
                 throw new ArgumentException($"Movement type {(byte)m.MovementType} is not 0, 6, 7, 8 or 9.", nameof(m));
         }
 
-        MotionChecks.Check(m.Parameters);
-        MovementParameters p = m.Parameters;
-        if (!float.IsFinite(p.DistanceToObject) || !float.IsFinite(p.MinDistance) || !float.IsFinite(p.FailDistance)
-            || !float.IsFinite(p.WalkRunThreshold) || !float.IsFinite(p.DesiredHeading))
-        {
-            throw new ArgumentException("The MovementEvent's parameters must be finite.", nameof(m));
-        }
+        // The move-to API's own check (MoveToObject, TurnToObject, MoveToPosition, TurnToHeading), here before any stamp.
+        m.Parameters.CheckFiniteForMoveTo(nameof(m));
     }
 
     /// <summary>Creates the movement manager when absent (without its default state, as retail) and unpacks the movement
@@ -128,11 +124,10 @@ public sealed partial class PhysicsObj
     /// <see cref="LastMoveWasAutonomous"/> becomes true, then the movement manager runs it
     /// (<see cref="MovementManager.DoMotion"/>).</summary>
     /// <returns>The motion error; <see cref="MotionError.NoMotionTable"/> (7) when the object has no movement manager
-    /// yet (retail's answer), nothing started.</returns>
+    /// yet (retail's answer) or a client's own, nothing started.</returns>
     /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed is NaN
     /// or infinite (nothing changes).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world, or its movement manager is a
-    /// client's own.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::DoMotion (acclient.c:317314)
     public MotionError DoMotion(MotionCommand motion, in MovementParameters p)
     {
@@ -140,17 +135,17 @@ public sealed partial class PhysicsObj
         MotionChecks.Check(p);
         Touch();
         _lastMoveWasAutonomous = true;
-        return Movement is null ? MotionError.NoMotionTable : RetailMovement().DoMotion(motion, p);
+        return Movement is MovementManager mm ? mm.DoMotion(motion, p) : MotionError.NoMotionTable;
     }
 
     /// <summary>Stops a motion command as this client's own (retail <c>CPhysicsObj::StopMotion</c>):
     /// <see cref="LastMoveWasAutonomous"/> becomes true, then the movement manager stops it
     /// (<see cref="MovementManager.StopMotion"/>).</summary>
-    /// <returns>The motion error; <see cref="MotionError.NoMotionTable"/> (7) without a movement manager.</returns>
+    /// <returns>The motion error; <see cref="MotionError.NoMotionTable"/> (7) without a movement manager or with a client's
+    /// own.</returns>
     /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed is NaN
     /// or infinite (nothing changes).</exception>
-    /// <exception cref="InvalidOperationException">The object was removed from its world, or its movement manager is a
-    /// client's own.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::StopMotion (acclient.c:317353)
     public MotionError StopMotion(MotionCommand motion, in MovementParameters p)
     {
@@ -158,9 +153,6 @@ public sealed partial class PhysicsObj
         MotionChecks.Check(p);
         Touch();
         _lastMoveWasAutonomous = true;
-        return Movement is null ? MotionError.NoMotionTable : RetailMovement().StopMotion(motion, p);
+        return Movement is MovementManager mm ? mm.StopMotion(motion, p) : MotionError.NoMotionTable;
     }
-
-    private MovementManager RetailMovement() => Movement as MovementManager
-        ?? throw new InvalidOperationException("The object's movement manager is a client's own, not the retail MovementManager.");
 }
