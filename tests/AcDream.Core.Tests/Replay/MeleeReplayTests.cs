@@ -92,6 +92,32 @@ public class MeleeReplayTests(ITestOutputHelper output)
         Assert.True(moveTo >= 12);
     }
 
+    [ReplayDataFact]
+    public void EveryMovementEventOfTheOtherRecordings_DecodesToExactlyItsLength_EveryType()
+    {
+        // long-movement-run and the fellowship captures hold 55 events of types 6 and 8 that the type-0 decoder leaves
+        // (RealMotionReplayTests): the whole decoder reads them all.
+        var m = new MovementEventMessage();
+        var byType = new SortedDictionary<MovementEventType, int>();
+        foreach (string slug in new[] { "long-movement-run", "fellowship-one-vassal", "fellowship-two-monarch", "fellowship-three-vassal" })
+        {
+            foreach (string line in File.ReadLines(Path.Combine(Dir, slug + "_s2c_movementevent.csv")).Skip(1))
+            {
+                if (line.Length == 0)
+                {
+                    continue;
+                }
+
+                MovementEventDecoder.DecodeMovementData(Convert.FromHexString(line.Split(',')[6]), m);
+                byType[m.MovementType] = (byType.TryGetValue(m.MovementType, out int n) ? n : 0) + 1;
+            }
+        }
+
+        output.WriteLine(string.Join(", ", byType.Select(kv => $"{kv.Key} {kv.Value}")));
+        Assert.True(byType[MovementEventType.InterpretedMotion] > 600);
+        Assert.True(byType[MovementEventType.MoveToObject] + byType[MovementEventType.TurnToObject] >= 55);
+    }
+
     [MeleeDataFact]
     public void PlayersMoveToObject_CarriesACEsMeleeApproachParameters()
     {
