@@ -171,10 +171,7 @@ public sealed class TargetManager
         {
             TargettedVoyeurInfo v = _voyeurs[i];
             SendVoyeurUpdate(v, here, status);
-            if (i < _voyeurs.Count && _voyeurs[i] == v)
-            {
-                i++;
-            }
+            i = NextVoyeur(i, v);
         }
     }
 
@@ -210,7 +207,7 @@ public sealed class TargetManager
         }
         else
         {
-            _hasVoyeurTable = true;
+            CreateVoyeurTable();
         }
 
         TargettedVoyeurInfo info = _freeVoyeurs.Count != 0 ? _freeVoyeurs.Pop() : new TargettedVoyeurInfo();
@@ -220,6 +217,28 @@ public sealed class TargetManager
         info.LastSentPosition = new Position(0, Frame.Identity);
         InsertInRetailOrder(info);
         SendVoyeurUpdate(info, PhysicsObj.Position, TargetStatus.Ok);
+    }
+
+    /// <summary>The voyeur table comes into being (retail: a 4-bucket hash, news its bucket array).</summary>
+    // retail: LongNIHash<DetectionInfo>::LongNIHash (acclient.c:327982)
+    private void CreateVoyeurTable() => _hasVoyeurTable = true;
+
+    /// <summary>The index of the voyeur after <paramref name="current"/>, which was at <paramref name="i"/> before its report:
+    /// the same index when the report removed it.</summary>
+    // retail: LongNIHashIter<TargettedVoyeurInfo>::operator++ (acclient.c:327998)
+    private int NextVoyeur(int i, TargettedVoyeurInfo current) =>
+        i < _voyeurs.Count && _voyeurs[i] == current ? i + 1 : i;
+
+    /// <summary>Drops every voyeur entry (pooled), as the manager's destructor does; the object left its world for good.</summary>
+    // retail: LongNIHash<TargettedVoyeurInfo>::destroy_contents (acclient.c:328498)
+    internal void DestroyVoyeurs()
+    {
+        for (int i = 0; i < _voyeurs.Count; i++)
+        {
+            _freeVoyeurs.Push(_voyeurs[i]);
+        }
+
+        _voyeurs.Clear();
     }
 
     // retail: LongNIHash<ParticleEmitter>::add (acclient.c:327166): bucket (key ^ key >> 16) % 4, prepended to its bucket
@@ -299,10 +318,7 @@ public sealed class TargetManager
             {
                 TargettedVoyeurInfo v = _voyeurs[i];
                 CheckAndUpdateVoyeur(v);
-                if (i < _voyeurs.Count && _voyeurs[i] == v)
-                {
-                    i++;
-                }
+                i = NextVoyeur(i, v);
             }
         }
 

@@ -141,6 +141,10 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::motions_pending (acclient.c:315778)
     internal bool MotionsPending() => Movement is Motion.MovementManager mm && mm.MotionsPending();
 
+    /// <summary>True when the last move was this client's own (<see cref="LastMoveWasAutonomous"/>).</summary>
+    // retail: CPhysicsObj::movement_is_autonomous (acclient.c:315830)
+    internal bool MovementIsAutonomous() => _lastMoveWasAutonomous;
+
     /// <summary>The compass heading the object faces, degrees (the x87 double of <c>Frame::get_heading</c>).</summary>
     // retail: CPhysicsObj::get_heading (acclient.c:318634)
     internal double GetHeading() => _position.Frame.Heading;
@@ -222,8 +226,9 @@ public sealed partial class PhysicsObj
         PositionManager?.HandleUpdateTarget(info);
     }
 
-    /// <summary>The object leaves the world: its target tracking stops and its voyeurs are told
-    /// (<see cref="TargetStatus.ExitWorld"/>), so a move-to onto it cancels and a stick to it ends.</summary>
+    /// <summary>The object leaves the world for good: its target tracking stops, its voyeurs are told
+    /// (<see cref="TargetStatus.ExitWorld"/>), so a move-to onto it cancels and a stick to it ends, and its voyeur table is
+    /// emptied.</summary>
     // retail part: the target manager's lines of CPhysicsObj::exit_world (acclient.c line 322204)
     internal void NotifyTargetExitWorld()
     {
@@ -232,6 +237,8 @@ public sealed partial class PhysicsObj
         {
             tm.ClearTarget();
             tm.NotifyVoyeurOfEvent(TargetStatus.ExitWorld);
+            // The object is gone for good (retail deletes it: ~TargetManager destroys the voyeur table).
+            tm.DestroyVoyeurs();
         }
     }
 }
