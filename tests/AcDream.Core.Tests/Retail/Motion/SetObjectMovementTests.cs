@@ -174,4 +174,29 @@ public class SetObjectMovementTests
         Assert.Equal(0x80000002u, obj.StickyObjectId);
         Assert.True(MovementManager.Of(obj).GetOrCreateMotionInterpreter().StandingLongJump);
     }
+
+    [Fact]
+    public void MoveToObject_OfAnUnknownObject_MovesToTheOrigin_TurnToObject_TurnsToTheEventsHeading()
+    {
+        // acclient.c:339564-339578: CPhysicsObj::GetObjectA(target) fails -> MoveToManager::MoveToPosition(origin);
+        // acclient.c:339592-339606: for type 8 -> params.desired_heading = the event's heading, TurnToHeading.
+        var (obj, _, m) = Create(RemoteCreatureWeenie.Creature);
+        byte[] moveTo = new RetailDataWriter().Byte(6).Byte(0).UInt16(0x3D).UInt32(0x80000077u)
+            .UInt32(0xA9B40001u).Single(30f).Single(40f).Single(0f)
+            .UInt32(0x1EE0Fu).Single(0.6f).Single(0f).Single(float.MaxValue).Single(1f).Single(15f).Single(0f)
+            .Single(1.25f).ToArray();
+        Assert.Equal(MovementEventResult.Applied, Send(obj, m, 1, 0, data: moveTo));
+        MovementManager mm = MovementManager.Of(obj);
+        Assert.Equal(1.25f, mm.GetOrCreateMotionInterpreter().MyRunRate);
+        Assert.Equal(MovementType.MoveToPosition, mm.MoveToManager!.MovementType);
+        Assert.Equal(new Vector3(30f, 40f, 0f), mm.MoveToManager.SoughtPosition.Frame.Origin);
+        Assert.Equal(0xA9B40001u, mm.MoveToManager.SoughtPosition.ObjCellId);
+
+        // Type 8 with heading 123 before the parameters (whose own desired heading is 0): turns to 123.
+        byte[] turnTo = new RetailDataWriter().Byte(8).Byte(0).UInt16(0x3D).UInt32(0x80000077u).Single(123f)
+            .UInt32(0x1EE0Fu).Single(1f).Single(0f).ToArray();
+        Assert.Equal(MovementEventResult.Applied, Send(obj, m, 2, 0, data: turnTo));
+        Assert.Equal(MovementType.TurnToHeading, mm.MoveToManager.MovementType);
+        Assert.Equal(123f, mm.MoveToManager.MovementParams.DesiredHeading);
+    }
 }
