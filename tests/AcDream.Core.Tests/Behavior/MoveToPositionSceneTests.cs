@@ -205,6 +205,24 @@ public class MoveToPositionSceneTests
     }
 
     [Fact]
+    public void HitGround_RestartsTheCurrentStep()
+    {
+        (PhysicsWorld world, PhysicsObj player, MovementManager mm) = MoveToScene.WithPlayer();
+        mm.MoveToPosition(MoveToScene.At(100f, 60f), new MovementParameters());
+        SweepScene.Run(world, 10);
+        MoveToManager m = mm.MoveToManager!;
+        Assert.Equal(19.5f, m.OriginalDistance, 4);
+        // MoveToManager::HitGround -> BeginNextNode -> BeginMoveForward: the run is played again and the progress
+        // bookkeeping restarts from the current distance (19.5 - 10 × 0.475 = 14.75).
+        ((AcDream.Core.Physics.Objects.Seams.IMovementManager)mm).HitGround();
+        Assert.True(player.IsMovingTo());
+        Assert.Equal(MotionCommand.WalkForward, m.CurrentCommand);
+        Assert.Equal(14.75f, m.OriginalDistance, 3);
+        Assert.Equal(m.OriginalDistance, m.PreviousDistance);
+        Assert.Equal(world.CurrentTime, m.OriginalDistanceTime);
+    }
+
+    [Fact]
     public void NoProgress_CountsFailedChecks_AfterOneSecond_AndKeepsGoing()
     {
         (PhysicsWorld world, PhysicsObj player, MovementManager mm) = MoveToScene.WithPlayer();

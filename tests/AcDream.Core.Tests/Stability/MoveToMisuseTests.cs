@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
@@ -129,6 +130,27 @@ public class MoveToMisuseTests
             SweepScene.Run(world, 60);
             Assert.True(InputLimits.IsPositionInDomain(player.Position), $"{which}, type {kind}: {player.Position}");
         }
+    }
+
+    [Fact]
+    public void HandleUpdateTarget_OkReportWithABadPosition_IsRefused_BeforeTheMoveToActs()
+    {
+        (PhysicsWorld world, PhysicsObj player, MovementManager mm) = MoveToScene.WithPlayer();
+        mm.MoveToObject(42, 42, 0.5f, 1f, new MovementParameters());   // waiting for its first report
+        var bad = new TargetInfo
+        {
+            ObjectId = 42, Status = TargetStatus.Ok, TargetPosition = MoveToScene.At(100f, 60f),
+            InterpolatedPosition = new Position(MoveToScene.Cell, new Vector3(1000f, 0f, 20f)),   // outdoor x beyond 384
+        };
+        Assert.Throws<ArgumentException>(() => player.HandleUpdateTarget(bad));
+        Assert.False(mm.MoveToManager!.Initialized);
+        Assert.Equal(0, mm.MoveToManager.PendingActionCount);
+        // A good report plans the move.
+        bad.InterpolatedPosition = bad.TargetPosition;
+        player.HandleUpdateTarget(bad);
+        Assert.True(mm.MoveToManager.Initialized);
+        Assert.Equal(MotionCommand.WalkForward, mm.MoveToManager.CurrentCommand);
+        _ = world;
     }
 
     private static PhysicsObj Target(PhysicsWorld world) =>

@@ -85,11 +85,21 @@ public sealed partial class PhysicsObj
     /// and the position manager (a stick). The object's <see cref="TargetManager"/> does this for the reports it receives;
     /// a client may pass its own.</summary>
     /// <param name="info">The report.</param>
+    /// <exception cref="ArgumentException">An Ok report (context 0) whose target or interpolated position is outside the
+    /// position domain; nothing changes.</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::HandleUpdateTarget (acclient.c:319966)
     public void HandleUpdateTarget(in TargetInfo info)
     {
         ThrowIfRemoved();
+        // non-retail: an Ok report's positions must be usable before any manager acts on it (the move-to plans from both)
+        if (info.Status == TargetStatus.Ok && info.ContextId == 0
+            && (!ManagerMath.IsUsable(info.TargetPosition) || !ManagerMath.IsUsable(info.InterpolatedPosition)))
+        {
+            throw new ArgumentException("An Ok report's target and interpolated positions must be in the position domain.",
+                nameof(info));
+        }
+
         HandleUpdateTargetInternal(info);
     }
 

@@ -241,6 +241,12 @@ public class MoveToRetailTests
         byte[] nan = new byte[12];
         BinaryPrimitives.WriteUInt32LittleEndian(nan.AsSpan(4), 0x7FC00000u);
         Assert.Throws<RetailDataFormatException>(() => MovementParameters.UnPackNet(nan, MovementType.TurnToHeading, out _));
+        byte[] fast = new byte[12];
+        BinaryPrimitives.WriteUInt32LittleEndian(fast.AsSpan(4), BitConverter.SingleToUInt32Bits(101f));   // beyond ±100
+        Assert.Throws<RetailDataFormatException>(() => MovementParameters.UnPackNet(fast, MovementType.TurnToHeading, out _));
+        BinaryPrimitives.WriteUInt32LittleEndian(fast.AsSpan(4), BitConverter.SingleToUInt32Bits(100f));   // the bound itself
+        Assert.Equal(100f, MovementParameters.UnPackNet(fast, MovementType.TurnToHeading, out _).Speed);
+        Assert.Equal(0x42C80000u, BitConverter.SingleToUInt32Bits(MovementParameters.MaxMoveToSpeed));
         Assert.Throws<ArgumentException>(() => new MovementParameters().PackNet(new byte[27], MovementType.MoveToObject));
         Assert.Throws<ArgumentException>(() => new MovementParameters().PackNet(new byte[28], MovementType.StopCompletely));
         Assert.Throws<ArgumentException>(() => new MovementParameters().Pack(new byte[39]));
