@@ -90,6 +90,17 @@ public class WakeRuleTests
         ["GetOrCreateMotionInterpreter()"] = (null, f => f.Obj.GetOrCreateMotionInterpreter()),
         ["GoToLostCell(Position)"] = (null, f => f.Obj.GoToLostCell(Near(0.5f))),
         ["HandleReceivedPosition(Position, UInt16, UInt16, Boolean)"] = (null, f => f.Obj.HandleReceivedPosition(Near(0.5f), 1, 0, true)),
+        // A MovementEvent that is applied (newer movement stamp): walk forward.
+        ["HandleMovementEvent(MovementEventMessage)"] = (null, f =>
+        {
+            var m = new MovementEventMessage { ObjectId = f.Obj.Id, MovementTimestamp = 1 };
+            m.State.ForwardCommand = MotionCommand.WalkForward;
+            f.Obj.HandleMovementEvent(m);
+        }),
+        ["DoMotion(MotionCommand, MovementParameters)"] = (null,
+            f => f.Obj.DoMotion(MotionCommand.WalkForward, new MovementParameters())),
+        ["StopMotion(MotionCommand, MovementParameters)"] = (null,
+            f => f.Obj.StopMotion(MotionCommand.WalkForward, new MovementParameters())),
         ["HandleUpdateTarget(TargetInfo)"] = (null, f => f.Obj.HandleUpdateTarget(default)),
         ["InterpolateTo(Position, Boolean)"] = (null, f => f.Obj.InterpolateTo(Near(0.5f), false)),
         ["MakePositionManager()"] = (null, f => f.Obj.MakePositionManager()),

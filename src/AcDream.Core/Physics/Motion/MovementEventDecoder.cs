@@ -1,5 +1,4 @@
 using System;
-using System.Buffers.Binary;
 
 namespace AcDream.Core.Physics.Motion;
 
@@ -22,16 +21,20 @@ public readonly record struct MovementEventHeader(byte MovementType, MotionComma
 }
 
 /// <summary>
-/// Decodes the movement data of a MovementEvent (0xF74C) of movement type 0 (retail <c>MovementManager::unpack_movement</c>
-/// and <c>InterpretedMotionState::UnPack</c>). The bytes are those after the message's header (guid, the three 16-bit
-/// sequences, the autonomous byte and its pad), which start 4-byte aligned.
+/// Decodes MovementEvents (message 0xF74C) from their bytes: the whole body (<see cref="Decode"/>, every movement type,
+/// into a reusable <see cref="MovementEventMessage"/>), the movement data alone (<see cref="DecodeMovementData"/>), or the
+/// type-0 data into an interpreted state (<see cref="TryDecode"/>). Retail reads the same fields in
+/// <c>CPhysics::SetObjectMovement</c> (the stamps), <c>MovementManager::unpack_movement</c> (the header and each type),
+/// <c>InterpretedMotionState::UnPack</c>, <c>Position::UnPackOrigin</c> and <c>MovementParameters::UnPackNet</c>; this is
+/// the wire side only, and applies nothing (<see cref="Objects.PhysicsObj.HandleMovementEvent"/> does).
 /// </summary>
-public static class MovementEventDecoder
+public static partial class MovementEventDecoder
 {
     /// <summary>
-    /// Decodes <paramref name="data"/> into <paramref name="state"/>: true only for movement type 0 read to exactly the
-    /// data's length; false (and <paramref name="state"/> unspecified) for another type, an unknown command index, a short
-    /// buffer or trailing bytes.
+    /// Decodes the movement data of a type-0 event into <paramref name="state"/>: true only for movement type 0 read to
+    /// exactly the data's length; false (and <paramref name="state"/> unspecified) for another type, an unknown command
+    /// index, a NaN or infinite speed, a short buffer or trailing bytes. The bytes are those after the message's header
+    /// (guid, the three 16-bit sequences, the autonomous byte and its pad), which start 4-byte aligned.
     /// </summary>
     /// <exception cref="ArgumentNullException"><paramref name="state"/> is null.</exception>
     // retail: MovementManager::unpack_movement (acclient.c:339491), the header and case 0
@@ -39,181 +42,121 @@ public static class MovementEventDecoder
     {
         ArgumentNullException.ThrowIfNull(state);
         header = default;
-        if (data.Length < 4)
+        var r = new Data.RetailDataReader(data, "MovementEvent");
+        try
         {
-            return false;
-        }
-
-        ushort word = BinaryPrimitives.ReadUInt16LittleEndian(data);
-        ushort styleIndex = BinaryPrimitives.ReadUInt16LittleEndian(data[2..]);
-        if (!MotionCommandIds.TryGet(styleIndex, out MotionCommand style))
-        {
-            return false;
-        }
-
-        byte type = (byte)word;
-        header = new MovementEventHeader(type, style, 0, (word & 0x200) != 0);
-        if (type != 0)
-        {
-            return false;
-        }
-
-        int offset = 4;
-        if (!TryUnpackInterpretedState(data, ref offset, state))
-        {
-            return false;
-        }
-
-        uint stick = 0;
-        if ((word & 0x100) != 0)
-        {
-            if (offset + 4 > data.Length)
+            ushort word = r.ReadUInt16("movement type and flags");
+            MotionCommand style = ReadCommand(ref r, "style");
+            byte type = (byte)word;
+            header = new MovementEventHeader(type, style, 0, (word & 0x200) != 0);
+            if (type != 0)
             {
                 return false;
             }
 
-            stick = BinaryPrimitives.ReadUInt32LittleEndian(data[offset..]);
-            offset += 4;
+            UnpackInterpretedState(ref r, state);
+            uint stick = (word & 0x100) != 0 ? r.ReadUInt32("sticky object") : 0u;
+            header = header with { StickToObject = stick };
+            return r.Remaining == 0;
         }
-
-        header = header with { StickToObject = stick };
-        return offset == data.Length;
+        catch (Data.RetailDataFormatException)
+        {
+            return false;
+        }
     }
 
     /// <summary>Reads an interpreted motion state at <paramref name="offset"/>: a flag word, then the style, forward,
     /// side-step and turn command indices (flags 0x1, 0x2, 0x8, 0x20), the forward, side-step and turn speeds (0x4, 0x10,
     /// 0x40), (flags >> 7) &amp; 31 actions (index, 15-bit stamp with the autonomous bit, speed), then padding to 4 bytes.
-    /// Absent fields take the defaults.</summary>
+    /// Absent fields take the defaults. False (state unspecified) for a short buffer, an unknown command index or a NaN
+    /// or infinite speed.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="state"/> is null.</exception>
     // retail: InterpretedMotionState::UnPack (acclient.c:333444)
     public static bool TryUnpackInterpretedState(ReadOnlySpan<byte> data, ref int offset, InterpretedMotionState state)
     {
         ArgumentNullException.ThrowIfNull(state);
         state.Reset();
-        if (offset + 4 > data.Length)
+        if (offset < 0 || offset > data.Length)
         {
             return false;
         }
 
-        uint flags = BinaryPrimitives.ReadUInt32LittleEndian(data[offset..]);
-        offset += 4;
-        MotionCommand cmd;
+        var r = new Data.RetailDataReader(data, "InterpretedMotionState");
+        try
+        {
+            r.Skip(offset);
+            UnpackInterpretedState(ref r, state);
+            offset = r.Offset;
+            return true;
+        }
+        catch (Data.RetailDataFormatException)
+        {
+            return false;
+        }
+    }
+
+    // retail: InterpretedMotionState::UnPack (acclient.c:333444), through the bounds-checked reader
+    internal static void UnpackInterpretedState(ref Data.RetailDataReader r, InterpretedMotionState state)
+    {
+        state.Reset();
+        uint flags = r.ReadUInt32("InterpretedMotionState flags");
         if ((flags & 0x1) != 0)
         {
-            if (!ReadCommand(data, ref offset, out cmd))
-            {
-                return false;
-            }
-
-            state.CurrentStyle = cmd;
+            state.CurrentStyle = ReadCommand(ref r, "current style");
         }
 
         if ((flags & 0x2) != 0)
         {
-            if (!ReadCommand(data, ref offset, out cmd))
-            {
-                return false;
-            }
-
-            state.ForwardCommand = cmd;
+            state.ForwardCommand = ReadCommand(ref r, "forward command");
         }
 
         if ((flags & 0x8) != 0)
         {
-            if (!ReadCommand(data, ref offset, out cmd))
-            {
-                return false;
-            }
-
-            state.SidestepCommand = cmd;
+            state.SidestepCommand = ReadCommand(ref r, "sidestep command");
         }
 
         if ((flags & 0x20) != 0)
         {
-            if (!ReadCommand(data, ref offset, out cmd))
-            {
-                return false;
-            }
-
-            state.TurnCommand = cmd;
+            state.TurnCommand = ReadCommand(ref r, "turn command");
         }
 
-        float speed;
         if ((flags & 0x4) != 0)
         {
-            if (!ReadFloat(data, ref offset, out speed))
-            {
-                return false;
-            }
-
-            state.ForwardSpeed = speed;
+            state.ForwardSpeed = r.ReadFiniteSingle("forward speed");
         }
 
         if ((flags & 0x10) != 0)
         {
-            if (!ReadFloat(data, ref offset, out speed))
-            {
-                return false;
-            }
-
-            state.SidestepSpeed = speed;
+            state.SidestepSpeed = r.ReadFiniteSingle("sidestep speed");
         }
 
         if ((flags & 0x40) != 0)
         {
-            if (!ReadFloat(data, ref offset, out speed))
-            {
-                return false;
-            }
-
-            state.TurnSpeed = speed;
+            state.TurnSpeed = r.ReadFiniteSingle("turn speed");
         }
 
-        int actions = (int)((flags >> 7) & 0x1F);
+        int actions = r.CheckCount((flags >> 7) & 0x1F, "actions", 8);
         for (int i = 0; i < actions; i++)
         {
-            if (!ReadCommand(data, ref offset, out cmd) || offset + 6 > data.Length)
-            {
-                return false;
-            }
-
-            ushort stamp = BinaryPrimitives.ReadUInt16LittleEndian(data[offset..]);
-            offset += 2;
-            ReadFloat(data, ref offset, out speed);
+            MotionCommand cmd = ReadCommand(ref r, "action");
+            ushort stamp = r.ReadUInt16("action stamp");
+            float speed = r.ReadFiniteSingle("action speed");
             state.AddAction(cmd, speed, stamp & 0x7FFFu, ((stamp >> 15) & 1) != 0);
         }
 
-        int pad = offset % 4;
-        if (pad != 0)
-        {
-            offset += 4 - pad;
-        }
-
-        return offset <= data.Length;
+        r.Align4();
     }
 
-    private static bool ReadCommand(ReadOnlySpan<byte> data, ref int offset, out MotionCommand command)
+    // A 16-bit command index, through retail's command_ids table; an index past it is a format error.
+    private static MotionCommand ReadCommand(ref Data.RetailDataReader r, string what)
     {
-        command = MotionCommand.None;
-        if (offset + 2 > data.Length)
+        int at = r.Offset;
+        ushort index = r.ReadUInt16(what);
+        if (!MotionCommandIds.TryGet(index, out MotionCommand command))
         {
-            return false;
+            throw r.ErrorAt(at, $"{what} index 0x{index:X4} is not a motion command (the table has {MotionCommandIds.Count})");
         }
 
-        ushort index = BinaryPrimitives.ReadUInt16LittleEndian(data[offset..]);
-        offset += 2;
-        return MotionCommandIds.TryGet(index, out command);
-    }
-
-    private static bool ReadFloat(ReadOnlySpan<byte> data, ref int offset, out float value)
-    {
-        value = 0f;
-        if (offset + 4 > data.Length)
-        {
-            return false;
-        }
-
-        value = BinaryPrimitives.ReadSingleLittleEndian(data[offset..]);
-        offset += 4;
-        return true;
+        return command;
     }
 }
