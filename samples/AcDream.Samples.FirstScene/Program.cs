@@ -2,7 +2,9 @@ using System;
 using System.Globalization;
 using System.IO;
 using System.Numerics;
+using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Input;
+using AcDream.Core.Tests.Support.Data;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
@@ -15,7 +17,8 @@ namespace AcDream.Samples.FirstScene;
 /// <summary>
 /// A client's first scene (docs/getting-started.md walks through it): the terrain around Holtburg, a player built from the human
 /// Setup walking, turning, running, jumping and walking into a hut, driven by its movement keys through
-/// <see cref="PlayerInput"/>, a remote creature fed position reports every 0.2 s, and a fade. Each frame it ticks the world and
+/// <see cref="PlayerInput"/>, a remote creature fed position reports every 0.2 s, a creature the server moves onto the player (MoveToObject) and the
+/// player turning to face it (TurnToObject), and a fade. Each frame it ticks the world and
 /// takes the pose to draw (<see cref="PhysicsObj.GetRenderPose"/> at <see cref="PhysicsWorld.RenderTime"/>); each simulated
 /// second it prints that drawn pose and what a developer wants to see. Options: see <c>--help</c>. Exits 1 when the scene did
 /// not do what it should (CI smoke-runs it).
@@ -81,8 +84,13 @@ public static class Program
         //    anything that would keep it from walking.
         PhysicsObj player = world.CreateObject(0x50000001);
         // The motion table turns motion commands into root motion: without one the player would not walk (SetupIssues says
-        // NoMotionTable). A client with real motion tables plugs its own in here.
-        var body = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
+        // NoMotionTable). Here it is a retail motion table read from its bytes (MotionTable.UnPack): a client hands it the
+        // data-file entry (0x09000001 for a human) from its own dat reader; the sample writes a humanoid table's bytes
+        // (HumanoidMotionTable, the walk, run, side-step and turn speeds of the human table). AnimatedPartArray plays it
+        // through retail's MotionTableManager and CSequence. A client without motion tables uses
+        // new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() }, which moves the same.
+        MotionTable humanTable = MotionTable.UnPack(HumanoidMotionTable.Bytes());
+        var body = new AnimatedPartArray(SetupPhysics.Human, numParts: 1, humanTable, animations: null);
         player.PartArray = body;
         player.Weenie = KeyScript.Character();
         if (!player.EnterWorld(Scene.OnGround(terrain, 60f, 40f, heading: 0f)))
@@ -101,6 +109,7 @@ public static class Program
         // 4. The player's input: the movement keys become retail's motion commands (a client passes its keyboard's state).
         var input = new PlayerInput(player);
         var remote = new RemoteCreature(world, terrain);
+        var chaser = new Chaser(world, terrain, player);
         var check = new SceneCheck();
         bool faded = false;
         Console.WriteLine("   t  drawn cell      x       y       z     contact  speed  heading  doing                           | creature  error  transl.");
@@ -116,6 +125,7 @@ public static class Program
             remote.Deliver(now);
             (MovementKeys keys, command) = KeyScript.At(now);
             input.SetHeldKeys(keys);
+            chaser.Deliver(now);
             if ((keys & MovementKeys.Jump) == 0 && command == "run east (jump)" && input.LastError != MotionError.None)
             {
                 command = $"jump refused ({input.LastError})";
@@ -132,10 +142,11 @@ public static class Program
             if (i % fps == 0)
             {
                 Print(player, drawn, remote, now, command);
+                Console.WriteLine($"      chaser: {chaser.Status}");
             }
         }
 
-        return seconds >= KeyScript.Seconds ? check.Report(remote, seconds) : 0;
+        return seconds >= KeyScript.Seconds ? check.Report(remote, chaser, seconds) : 0;
     }
 
     private static void Print(PhysicsObj player, in Position drawn, RemoteCreature remote, double now, string command)

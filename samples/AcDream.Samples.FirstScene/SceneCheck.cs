@@ -7,8 +7,8 @@ using AcDream.Core.Physics.Terrain;
 namespace AcDream.Samples.FirstScene;
 
 /// <summary>What the scene must show (checked at the end, so that CI's smoke run fails when the recipe breaks): the player
-/// walked and ran, jumped, reached the hut's wall without entering it, the creature followed its reports, and the fade
-/// finished.</summary>
+/// walked and ran, jumped, reached the hut's wall without entering it, the creature followed its reports, the fade
+/// finished, the chaser reached the player and the player turned to face it.</summary>
 internal sealed class SceneCheck
 {
     private Vector3 _start;
@@ -59,7 +59,7 @@ internal sealed class SceneCheck
     }
 
     /// <summary>Prints the summary; 0 when every expectation holds, else 1.</summary>
-    public int Report(RemoteCreature remote, double now)
+    public int Report(RemoteCreature remote, Chaser chaser, double now)
     {
         // Walk 4 s at 3.12 and 2 s turning (18.7 m), run 4 s at 6 (24 m), the jump (about 9 m), then 8.5 s of walking (26.5 m).
         bool walked = _path > 60f;
@@ -80,7 +80,14 @@ internal sealed class SceneCheck
         Console.WriteLine($"closest to the hut wall {_closestToHut:F2} m (feet radius {radius:F2}): {(hut ? "ok, slid along it" : "FAIL")}");
         Console.WriteLine($"creature: {remote.Reports} reports, {error:F2} m from the server's position: {(followed ? "ok" : "FAIL")}");
         Console.WriteLine($"fade finished: {(fadeDone ? "ok" : "FAIL")}");
-        return walked && jumped && hut && followed && fadeDone ? 0 : 1;
+        // The move-to ends 0.6 m (distance_to_object) from the player's cylinder, both radius 0.48: centres about 1.56 m apart,
+        // plus at most one run step's overshoot check; 2.2 m allows a step of the player walking away meanwhile.
+        bool chased = chaser.Arrived && chaser.Distance < 2.2f;
+        Console.WriteLine($"chaser: arrived {chaser.Distance:F2} m from the player: {(chased ? "ok" : "FAIL")}");
+        // TurnToObject ends facing the target (the heading within the turn's last step, 1.5 rad/s x 1/30 s = 2.9 degrees).
+        bool faced = chaser.PlayerFacingError < 5.0;
+        Console.WriteLine($"player faces the chaser: {chaser.PlayerFacingError:F1} degrees off: {(faced ? "ok" : "FAIL")}");
+        return walked && jumped && hut && followed && fadeDone && chased && faced ? 0 : 1;
     }
 
     private static float SetupPhysicsRadius => SetupPhysics.Human.Spheres[0].Radius;
