@@ -90,18 +90,7 @@ public sealed partial class MoveToManager
         CurrentTargetPosition = p;
         SoughtObjectRadius = 0f;
         float distance = (float)GetCurrentDistance();
-        float objHeading = (float)obj.GetHeading();
-        double d = obj.Position.HeadingTo(p) - objHeading;
-        float pa = (float)d;
-        if (Math.Abs(d) < Eps)
-        {
-            pa = 0f;
-        }
-
-        if (-Eps > pa)
-        {
-            pa = (float)(pa + 360.0);
-        }
+        float pa = RelativeHeading(obj, p);
 
         bool moveAway = false;
         mp.GetCommand(distance, pa, out MotionCommand command, out _, ref moveAway);

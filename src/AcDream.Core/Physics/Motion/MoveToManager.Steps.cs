@@ -10,6 +10,26 @@ public sealed partial class MoveToManager
 {
     private const float Eps = PhysicsGlobals.Epsilon;
 
+    // The heading to the target relative to the object's own, as BeginMoveForward and MoveToPosition compute it inline:
+    // heading_to(target) − (float)heading in double, rounded to float; within EPSILON of 0 it is 0, below −EPSILON + 360.
+    private static float RelativeHeading(PhysicsObj obj, in Position target)
+    {
+        float h = (float)obj.GetHeading();
+        double d = obj.Position.HeadingTo(target) - h;
+        float relative = (float)d;
+        if (Math.Abs(d) < Eps)
+        {
+            relative = 0f;
+        }
+
+        if (-Eps > relative)
+        {
+            relative = (float)(relative + 360.0);
+        }
+
+        return relative;
+    }
+
     /// <summary>True when heading <paramref name="x"/> is past <paramref name="y"/> in the direction of
     /// <paramref name="motion"/> (turn right: clockwise, else anticlockwise), across the 0/360 wrap.</summary>
     // retail: heading_greater (acclient.c:344714)
@@ -73,18 +93,7 @@ public sealed partial class MoveToManager
         }
 
         float currDistance = (float)GetCurrentDistance();
-        float h = (float)obj.GetHeading();
-        double d = obj.Position.HeadingTo(CurrentTargetPosition) - h;
-        float currHeading = (float)d;
-        if (Math.Abs(d) < Eps)
-        {
-            currHeading = 0f;
-        }
-
-        if (-Eps > currHeading)
-        {
-            currHeading = (float)(currHeading + 360.0);
-        }
+        float currHeading = RelativeHeading(obj, CurrentTargetPosition);
 
         bool moveAway = false;
         _movementParams.GetCommand(currDistance, currHeading, out MotionCommand motion, out HoldKey holdKey, ref moveAway);
