@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
@@ -52,13 +53,14 @@ public sealed class RetailSetup
     private readonly RetailLocation[] _holdingLocations;
     private readonly RetailLocation[] _connectionPoints;
     private readonly Dictionary<uint, Frame[]> _placementFrames;
+    private readonly Dictionary<uint, AnimFrame> _placementAnimFrames;
     private readonly CylSphere[] _cylSpheres;
     private readonly Sphere[] _spheres;
     private readonly RetailLight[] _lights;
     private readonly int _shapesOffset;
 
     private RetailSetup(uint id, uint flags, uint[] parts, uint[] parentIndices, Vector3[] defaultScales, RetailLocation[] holding,
-        RetailLocation[] connection, Dictionary<uint, Frame[]> placement, CylSphere[] cylSpheres, Sphere[] spheres, float height,
+        RetailLocation[] connection, Dictionary<uint, Frame[]> placement, Dictionary<uint, AnimFrame> placementAnim, CylSphere[] cylSpheres, Sphere[] spheres, float height,
         float radius, float stepUp, float stepDown, Sphere sorting, Sphere selection, RetailLight[] lights, uint[] ids, int shapesOffset)
     {
         Id = id;
@@ -69,6 +71,7 @@ public sealed class RetailSetup
         _holdingLocations = holding;
         _connectionPoints = connection;
         _placementFrames = placement;
+        _placementAnimFrames = placementAnim;
         _cylSpheres = cylSpheres;
         _spheres = spheres;
         Height = height;
@@ -116,6 +119,11 @@ public sealed class RetailSetup
 
     /// <summary>The placement frames: for each placement key, one frame per part. Retail: <c>placement_frames</c>.</summary>
     public IReadOnlyDictionary<uint, Frame[]> PlacementFrames => _placementFrames;
+
+    /// <summary>The placement frames as retail holds them: for each placement key an <see cref="AnimFrame"/> (the part frames
+    /// as read, unnormalised, and the frame's animation hooks), what <see cref="Objects.Parts.AnimatedPartArray"/> takes as
+    /// its placement frames. Retail: <c>placement_frames</c> (<c>AnimFrame</c>).</summary>
+    public IReadOnlyDictionary<uint, AnimFrame> PlacementAnimFrames => _placementAnimFrames;
 
     /// <summary>The cylinder spheres, object-local. Retail: <c>cylsphere</c>.</summary>
     public ReadOnlySpan<CylSphere> CylSpheres => _cylSpheres;
@@ -196,7 +204,7 @@ public sealed class RetailSetup
 
     /// <summary>Unpacks one Setup entry's bytes (after the data-file container). Retail <c>CSetup::UnPack</c>.</summary>
     /// <exception cref="RetailDataFormatException">The bytes are not a Setup (truncated, inconsistent, a frame not valid, or a
-    /// placement frame with animation hooks: the library reads no hooks yet).</exception>
+    /// placement frame's animation hook not valid).</exception>
     // retail: CSetup::UnPack (acclient.c:335520)
     public static RetailSetup Unpack(ReadOnlySpan<byte> data)
     {
@@ -236,12 +244,24 @@ public sealed class RetailSetup
         RetailLocation[] connection = ReadLocations(ref r, "connection point");
         int numPlacements = r.ReadCount("placement frame count", 8);
         var placement = new Dictionary<uint, Frame[]>(numPlacements);
+        var placementAnim = new Dictionary<uint, AnimFrame>(numPlacements);
         for (int i = 0; i < numPlacements; i++)
         {
             uint key = r.ReadUInt32("placement key");
-            Frame[] frames = UnpackAnimFrame(ref r, numParts);
+            string structure = r.Structure;
+            r.Structure = "AnimFrame (CSetup placement)";
+            AnimFrame frame = AnimFrame.UnPack(ref r, numParts);
+            r.Structure = structure;
+            ReadOnlySpan<AFrame> partFrames = frame.Frames;
+            var frames = new Frame[partFrames.Length];
+            for (int k = 0; k < partFrames.Length; k++)
+            {
+                frames[k] = partFrames[k].ToFrame();
+            }
+
             // Retail's hash keeps both; a lookup finds the later one (it is linked in front of its bucket).
             placement[key] = frames;
+            placementAnim[key] = frame;
         }
 
         int shapesAt = r.Offset;
@@ -282,7 +302,7 @@ public sealed class RetailSetup
         }
 
         r.Align4();
-        return new RetailSetup(id, flags, parts, parents, scales, holding, connection, placement, cyl, spheres, height, radius, stepUp,
+        return new RetailSetup(id, flags, parts, parents, scales, holding, connection, placement, placementAnim, cyl, spheres, height, radius, stepUp,
             stepDown, sorting, selection, lights, ids, shapesAt);
     }
 
@@ -299,28 +319,5 @@ public sealed class RetailSetup
         }
 
         return list;
-    }
-
-    /// <summary>One placement: a frame per part (<c>AFrame::UnPack</c>), then the hook count. Divergence (why): a hook is a
-    /// format error — retail reads each through <c>CAnimHook::UnPackHook</c>, whose hook types the library does not read yet
-    /// (placement frames of Setups carry none in practice).</summary>
-    // retail: AnimFrame::UnPack (acclient.c:333869)
-    private static Frame[] UnpackAnimFrame(ref RetailDataReader r, int numParts)
-    {
-        r.CheckCount((uint)numParts, "placement part frame count", 28);
-        var frames = new Frame[numParts];
-        for (int i = 0; i < numParts; i++)
-        {
-            frames[i] = r.ReadFrame("placement frame");
-        }
-
-        int hooksAt = r.Offset;
-        uint hooks = r.ReadUInt32("placement hook count");
-        if (hooks != 0)
-        {
-            throw r.ErrorAt(hooksAt, $"placement frame with {hooks} animation hooks (the library reads no hooks)");
-        }
-
-        return frames;
     }
 }

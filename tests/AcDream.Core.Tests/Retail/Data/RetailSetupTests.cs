@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects.Parts;
@@ -39,6 +40,10 @@ public class RetailSetupTests
         w.UInt32(0);                                                                             // no connection points
         w.UInt32(2);                                                                             // two placements
         w.UInt32(0x65).Frame(Vector3.Zero, Quaternion.Identity).Frame(new Vector3(0f, 0f, 1f), Yaw90).UInt32(hooks);
+        for (uint h = 0; h < hooks; h++)
+        {
+            w.UInt32(6).Int32(1).Int32(1);   // EtherealHook (type 6), direction Forward (1), ethereal 1
+        }
         w.UInt32(0).Frame(new Vector3(1f, 0f, 0f), Quaternion.Identity).Frame(Vector3.Zero, Quaternion.Identity).UInt32(0);
         w.UInt32(1).Vector3(new Vector3(0f, 0f, 0f)).Single(0.75f).Single(2f);                  // cylinder sphere r 0.75 h 2
         w.UInt32(2).Vector3(new Vector3(0f, 0f, 0.48f)).Single(0.48f).Vector3(new Vector3(0f, 0f, 1.2f)).Single(0.48f);
@@ -158,14 +163,30 @@ public class RetailSetupTests
     }
 
     [Fact]
-    public void APlacementFrameWithHooks_IsAFormatError_NamingTheHookCount()
+    public void APlacementFrameWithAHook_ReadsItThroughUnPackHook()
+    {
+        // Retail's AnimFrame::UnPack (acclient.c:333869) reads each placement's hooks with CAnimHook::UnPackHook (342736):
+        // type 6 (Ethereal), direction 1 (Forward), then its int. The part frames are the same as without the hook.
+        RetailSetup s = RetailSetup.Unpack(TwoPartSetup(hooks: 1));
+        AnimFrame resting = s.PlacementAnimFrames[0x65];
+        Assert.Equal(1, resting.NumFrameHooks);
+        var hook = Assert.IsType<EtherealHook>(resting.Hooks);
+        Assert.True(hook.Ethereal);
+        Assert.Equal(AnimHookDirection.Forward, hook.Direction);
+        Assert.Equal(new Vector3(0f, 0f, 1f), resting.Frames[1].Origin);
+        Assert.Equal(new Vector3(0f, 0f, 1f), s.PlacementFrames[0x65][1].Origin);
+        Assert.Equal(0, s.PlacementAnimFrames[0].NumFrameHooks);
+    }
+
+    [Fact]
+    public void APlacementHookOfAnUnknownType_IsAFormatError_AtTheHook()
     {
         byte[] bytes = TwoPartSetup(hooks: 1);
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailSetup.Unpack(bytes));
-        Assert.Equal("CSetup", e.Structure);
         // id 4 + flags 4 + count 4 + parts 8 + parents 8 + scales 24 + holding 4 + 36 + connections 4 + placements 4 + key 4
-        // + two frames 56 = 160: the hook count of the first placement.
-        Assert.Equal(160, e.Offset);
+        // + two frames 56 = 160: the hook count; the hook's type word at 164.
+        BitConverter.TryWriteBytes(bytes.AsSpan(164), 99u);
+        var e = Assert.Throws<RetailDataFormatException>(() => RetailSetup.Unpack(bytes));
+        Assert.Equal(164, e.Offset);
     }
 
     [Fact]
