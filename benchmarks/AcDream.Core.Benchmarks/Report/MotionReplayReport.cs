@@ -75,14 +75,14 @@ internal static class MotionReplayReport
         foreach (Case c in cases)
         {
             RealRecording rec = RealRecording.Load(data, c.Slug, c.Guid, c.End);
-            RealReplayResult m = RealReplay.Run(rec, c.Guid, true);
-            RealReplayResult n = RealReplay.Run(rec, c.Guid, false);
+            RealReplayResult m = RealReplay.Run(rec, c.Guid, RealMode.AllEvents);
+            RealReplayResult n = RealReplay.Run(rec, c.Guid, RealMode.InterpolationOnly);
             var ma = RealReplay.Stats(m.Samples, null);
             var na = RealReplay.Stats(n.Samples, null);
             var mm = RealReplay.Stats(m.Samples, true);
             var nm = RealReplay.Stats(n.Samples, true);
             md.AppendLine(string.Create(inv,
-                $"| {c.Name} | {ma.Count} | {m.Decoded} / {m.Skipped} | {ma.Median:F3} / {ma.Max:F3} | {na.Median:F3} / {na.Max:F3} | {mm.Count} | {Fmt(mm)} | {Fmt(nm)} |"));
+                $"| {c.Name} | {ma.Count} | {m.Applied} / {m.MoveToTypes} | {ma.Median:F3} / {ma.Max:F3} | {na.Median:F3} / {na.Max:F3} | {mm.Count} | {Fmt(mm)} | {Fmt(nm)} |"));
             if (c.Slug == "long-movement-run")
             {
                 chart.Add("motion", m.Samples.Where(s => s.Moving).Select(s => (s.T, Math.Max(s.Error, 1e-3))), lines: false, markers: true);
