@@ -155,12 +155,11 @@ public class RealMotionReplayTests(ITestOutputHelper output)
         Assert.Equal(type0 + type8, all.Results.Sum());
         Assert.Equal(type0, zero.Applied);
 
-        // The TurnToObjects (bitfield 0x1EE0F, StopCompletely among them) turn the body in place; each arrives while the
-        // player stands or just before a type-0 event restarts it, so the horizontal errors while moving do not change.
-        var am = RealReplay.Stats(all.Samples, true);
-        var zm = RealReplay.Stats(zero.Samples, true);
-        Assert.Equal(zm.Count, am.Count);
-        Assert.Equal(zm.Median, am.Median);
+        // The TurnToObjects (bitfield 0x1EE0F, StopCompletely among them) turn the body in place, and each is followed by a
+        // type-0 event of +Brenwick within 0.03-0.85 s (234.797 -> 234.822, 366.667 -> 367.377, 369.106 -> 369.952,
+        // 386.556 -> 387.141, 390.720 -> 391.317, 394.264 -> 394.349) that sets the motion again; a turn moves no origin, so
+        // every compared (horizontal) error is the same with them as without.
+        Assert.Equal(zero.Samples, all.Samples);
 
         // t 234.82: a sticky type-0 event (motion flag 0x01) sticks +Brenwick to 0x80001EF2, now in the world under its
         // updates; its last report (199.40 s) is (52.5030899, -58.5909538), +Brenwick's pose at 234.84 s is (52.0668335,
