@@ -16,8 +16,9 @@ namespace AcDream.Core.Tests.Replay.Harness;
 /// <summary>One S2C UpdatePosition (0xF748) of the replayed guid.</summary>
 public readonly record struct RealUpdate(double T, Position Position, bool Grounded, ushort SeqPosition, ushort SeqTeleport);
 
-/// <summary>One S2C MovementEvent (0xF74C) of the replayed guid: its movement data bytes.</summary>
-public sealed record RealMovement(double T, byte[] Data);
+/// <summary>One S2C MovementEvent (0xF74C) of the replayed guid: its movement type and its body as the wire carries it after
+/// the opcode (guid, instance, movement and server-control stamps, autonomous byte, pad, then the recorded movement data).</summary>
+public sealed record RealMovement(double T, byte Type, byte[] Body);
 
 /// <summary>One pose the character's own client sent (C2S), the ground truth.</summary>
 public readonly record struct RealPose(double T, uint CellId, Vector3 Origin);
@@ -34,6 +35,9 @@ public sealed class RealRecording
     /// <summary>Movement events in arrival order.</summary>
     public List<RealMovement> Movements { get; } = new();
 
+    /// <summary>The updates of every other guid, in arrival order (the objects a client around the player knows).</summary>
+    public Dictionary<uint, List<RealUpdate>> OtherUpdates { get; } = new();
+
     /// <summary>Own poses in send order (F61C and F753 at one instant count once).</summary>
     public List<RealPose> Truth { get; } = new();
 
@@ -45,14 +49,28 @@ public sealed class RealRecording
         foreach (string[] c in Rows(Path.Combine(dir, slug + "_s2c_updateposition.csv")))
         {
             double t = D(c[0]);
-            if (c[1] != g || t > endTime)
+            if (t > endTime)
             {
                 continue;
             }
 
             var frame = new Frame(new Vector3(F(c[4]), F(c[5]), F(c[6])), new Quaternion(F(c[8]), F(c[9]), F(c[10]), F(c[7])));
-            r.Updates.Add(new RealUpdate(t, new Position(U(c[3]), frame), c[15] == "1", (ushort)int.Parse(c[17], CultureInfo.InvariantCulture),
-                (ushort)int.Parse(c[18], CultureInfo.InvariantCulture)));
+            var u = new RealUpdate(t, new Position(U(c[3]), frame), c[15] == "1", (ushort)int.Parse(c[17], CultureInfo.InvariantCulture),
+                (ushort)int.Parse(c[18], CultureInfo.InvariantCulture));
+            if (c[1] == g)
+            {
+                r.Updates.Add(u);
+            }
+            else
+            {
+                uint other = U(c[1]);
+                if (!r.OtherUpdates.TryGetValue(other, out List<RealUpdate>? list))
+                {
+                    r.OtherUpdates[other] = list = new List<RealUpdate>();
+                }
+
+                list.Add(u);
+            }
         }
 
         foreach (string[] c in Rows(Path.Combine(dir, slug + "_s2c_movementevent.csv")))
@@ -60,7 +78,17 @@ public sealed class RealRecording
             double t = D(c[0]);
             if (c[1] == g && t <= endTime)
             {
-                r.Movements.Add(new RealMovement(t, Convert.FromHexString(c[6])));
+                // The body after the opcode, rebuilt from the recorded columns: every field the wire carries is recorded
+                // (guid, the three stamps, the autonomous byte; the pad is zero), then the movement data bytes as received.
+                byte[] data = Convert.FromHexString(c[6]);
+                byte[] body = new byte[MovementEventDecoder.BodyHeaderLength + data.Length];
+                BitConverter.TryWriteBytes(body.AsSpan(0), guid);
+                BitConverter.TryWriteBytes(body.AsSpan(4), (ushort)int.Parse(c[2], CultureInfo.InvariantCulture));
+                BitConverter.TryWriteBytes(body.AsSpan(6), (ushort)int.Parse(c[3], CultureInfo.InvariantCulture));
+                BitConverter.TryWriteBytes(body.AsSpan(8), (ushort)int.Parse(c[4], CultureInfo.InvariantCulture));
+                body[10] = c[5] == "1" ? (byte)1 : (byte)0;
+                data.CopyTo(body, MovementEventDecoder.BodyHeaderLength);
+                r.Movements.Add(new RealMovement(t, data[0], body));
             }
         }
 
@@ -147,15 +175,42 @@ public sealed class LastReportGroundSweep : CollisionSweep
 /// <summary>The error of one truth pose: when, how far off, whether the character was moving.</summary>
 public readonly record struct RealSample(double T, double Error, bool Moving);
 
+/// <summary>What a real replay does with the replayed player's MovementEvents.</summary>
+public enum RealMode
+{
+    /// <summary>Every event is decoded from its body (<see cref="MovementEventDecoder.Decode"/>) and goes through the
+    /// retail entry point (<see cref="PhysicsObj.HandleMovementEvent"/>): types 0 and 6-9, as a client does.</summary>
+    AllEvents,
+
+    /// <summary>As <see cref="AllEvents"/>, but events of types 6-9 are dropped (type 0 only: what the replay applied before
+    /// the entry point existed).</summary>
+    TypeZeroOnly,
+
+    /// <summary>No MovementEvent is applied: the body follows its UpdatePositions only.</summary>
+    InterpolationOnly,
+}
+
 /// <summary>Result of a real replay run.</summary>
 /// <param name="Samples">Every compared truth pose.</param>
-/// <param name="Decoded">Movement events decoded (type 0, exact length) and applied.</param>
-/// <param name="Skipped">Movement events of other types (move-to, turn-to), not applied.</param>
-public sealed record RealReplayResult(List<RealSample> Samples, int Decoded, int Skipped);
+/// <param name="ByType">The replayed player's MovementEvents by movement type (index = type, 0..9).</param>
+/// <param name="Results">How many events given to <see cref="PhysicsObj.HandleMovementEvent"/> ended in each
+/// <see cref="MovementEventResult"/> (index = the result's value); events a mode drops are not counted.</param>
+public sealed record RealReplayResult(List<RealSample> Samples, int[] ByType, int[] Results)
+{
+    /// <summary>Events the entry point applied (<see cref="MovementEventResult.Applied"/>).</summary>
+    public int Applied => Results[(int)MovementEventResult.Applied];
+
+    /// <summary>Events of types 6-9.</summary>
+    public int MoveToTypes => ByType[6] + ByType[7] + ByType[8] + ByType[9];
+}
 
 /// <summary>
-/// Replays a recording's updates (and, with motion, its movement events) through a world at 30 Hz, the player as a remote
-/// object, and compares the body with the poses the player's own client sent.
+/// Replays a recording's updates (and, by <see cref="RealMode"/>, its movement events) through a world at 30 Hz, the player
+/// as a remote object, and compares the body with the poses the player's own client sent. Every object the player's
+/// MoveToObject / TurnToObject events target or its type-0 events stick to that has UpdatePositions in the recording is in the world too (a remote
+/// object under its updates, created at its first one), as it is in a client that sees the player: the move-to manager
+/// then tracks it; a target without updates (a static the recording has no position for) is unknown to the world, and the
+/// entry point does what retail does then (turns to the event's heading, moves to the event's origin).
 /// </summary>
 public static class RealReplay
 {
@@ -166,7 +221,7 @@ public static class RealReplay
     public const double MovingSpeed = 0.5;
 
     /// <summary>Runs the replay.</summary>
-    public static RealReplayResult Run(RealRecording rec, uint guid, bool applyMotion)
+    public static RealReplayResult Run(RealRecording rec, uint guid, RealMode mode)
     {
         const double dt = 1.0 / 30.0;
         RealUpdate first = rec.Updates[0];
@@ -184,9 +239,12 @@ public static class RealReplay
         parts.MotionTable = new RetailSpeedMotionTable();
         obj.PartArray = parts;
         obj.EnterWorld(first.Position);
-        var state = new InterpretedMotionState();
+        var message = new MovementEventMessage();
+        var targets = Targets(rec);
         var samples = new List<RealSample>();
-        int ui = 1, mi = 0, ti = 0, decoded = 0, skipped = 0;
+        int[] byType = new int[10];
+        int[] results = new int[5];
+        int ui = 1, mi = 0, ti = 0;
         double settleUntil = first.T + SettleTime;
         uint block = first.Position.ObjCellId >> 16;
         while (ti < rec.Truth.Count && rec.Truth[ti].T < first.T)
@@ -194,24 +252,45 @@ public static class RealReplay
             ti++;
         }
 
+        foreach (RealMovement m in rec.Movements)
+        {
+            byType[m.Type]++;
+        }
+
         double end = rec.Truth[^1].T;
         for (double now = first.T + dt; now <= end + dt; now += dt)
         {
+            foreach (Target target in targets)
+            {
+                uint tg = target.Guid;
+                while (target.Next < target.Updates.Count && target.Updates[target.Next].T <= now)
+                {
+                    RealUpdate u = target.Updates[target.Next++];
+                    if (world.GetObjectById(tg) is PhysicsObj t)
+                    {
+                        t.HandleReceivedPosition(u.Position, u.SeqPosition, u.SeqTeleport, u.Grounded);
+                    }
+                    else
+                    {
+                        // Created where its first update puts it (the recordings carry no CreateObject for these).
+                        PhysicsObj created = world.CreateObject(tg);
+                        created.Weenie = (tg >> 28) == 5 ? RemoteCreatureWeenie.Player : RemoteCreatureWeenie.Creature;
+                        created.PartArray = Walkers.OneSphere();
+                        created.EnterWorld(u.Position);
+                    }
+                }
+            }
+
             while (mi < rec.Movements.Count && rec.Movements[mi].T <= now)
             {
                 RealMovement m = rec.Movements[mi++];
-                if (MovementEventDecoder.TryDecode(m.Data, state, out MovementEventHeader h))
+                if (mode == RealMode.InterpolationOnly || (mode == RealMode.TypeZeroOnly && m.Type != 0))
                 {
-                    decoded++;
-                    if (applyMotion)
-                    {
-                        MovementEvent.ApplyInterpretedMotion(obj, state, h.StickToObject, h.StandingLongJump);
-                    }
+                    continue;
                 }
-                else
-                {
-                    skipped++;
-                }
+
+                MovementEventDecoder.Decode(m.Body, message);
+                results[(int)obj.HandleMovementEvent(message)]++;
             }
 
             while (ui < rec.Updates.Count && rec.Updates[ui].T <= now)
@@ -244,7 +323,42 @@ public static class RealReplay
             }
         }
 
-        return new RealReplayResult(samples, decoded, skipped);
+        return new RealReplayResult(samples, byType, results);
+    }
+
+    // A targeted object with updates: its guid, its updates and the index of the next one to deliver.
+    private sealed class Target(uint guid, List<RealUpdate> updates)
+    {
+        public uint Guid { get; } = guid;
+
+        public List<RealUpdate> Updates { get; } = updates;
+
+        public int Next { get; set; }
+    }
+
+    /// <summary>The objects the player's events target (types 6 and 8) or stick to (type 0) that have updates in the
+    /// recording.</summary>
+    private static List<Target> Targets(RealRecording rec)
+    {
+        var list = new List<Target>();
+        var seen = new HashSet<uint>();
+        foreach (RealMovement m in rec.Movements)
+        {
+            // Type 6 and 8 name their target right after the 4-byte header; a sticky type-0 event (motion flag 0x01) names
+            // its object in its last 4 bytes.
+            int at = m.Type is 6 or 8 ? MovementEventDecoder.BodyHeaderLength + 4
+                : m.Type == 0 && (m.Body[MovementEventDecoder.BodyHeaderLength + 1] & 0x01) != 0 ? m.Body.Length - 4 : -1;
+            if (at >= 0)
+            {
+                uint target = BitConverter.ToUInt32(m.Body, at);
+                if (rec.OtherUpdates.TryGetValue(target, out List<RealUpdate>? ups) && seen.Add(target))
+                {
+                    list.Add(new Target(target, ups));
+                }
+            }
+        }
+
+        return list;
     }
 
     private static double Speed(RealPose a, RealPose b)
