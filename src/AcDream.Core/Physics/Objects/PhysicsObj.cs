@@ -311,7 +311,9 @@ public sealed partial class PhysicsObj
         }
     }
 
-    /// <summary>Detection manager seam, or null.</summary>
+    /// <summary>The object's detection manager (retail <c>detection_manager</c>), or null: retail's
+    /// <see cref="Managers.DetectionManager"/> (created for this object), or a client's own. Checked in the object's step.</summary>
+    /// <exception cref="ArgumentException">A <see cref="Managers.DetectionManager"/> of another object.</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public IDetectionManager? DetectionManager
     {
@@ -319,6 +321,11 @@ public sealed partial class PhysicsObj
         set
         {
             ThrowIfRemoved();
+            if (value is Managers.DetectionManager dm && dm.PhysicsObj != this)
+            {
+                throw new ArgumentException("The detection manager was created for another object.", nameof(value));
+            }
+
             Touch();
             Rare(value is not null)?.DetectionManager = value;
         }

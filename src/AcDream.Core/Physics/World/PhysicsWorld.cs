@@ -231,6 +231,7 @@ public sealed partial class PhysicsWorld
 
         // retail: exit_world's target lines (acclient.c line 322204): the object stops tracking and its voyeurs are told
         obj.NotifyTargetExitWorld();
+        obj.NotifyDetectionExitWorld();
         if (obj == _player)
         {
             Scene.WakeGatedDormant();

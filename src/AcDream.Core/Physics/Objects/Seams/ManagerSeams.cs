@@ -67,7 +67,8 @@ public interface IMovementManagerFactory
     IMovementManager Create(PhysicsObj obj);
 }
 
-/// <summary>Seam to an object's detection manager (retail <c>DetectionManager::CheckDetection</c>).</summary>
+/// <summary>Seam to an object's detection manager (retail <c>DetectionManager::CheckDetection</c>), for a client's own;
+/// retail's is <see cref="Managers.DetectionManager"/>. Called in the object's step: must not allocate.</summary>
 public interface IDetectionManager
 {
     /// <summary>Per-step detection check.</summary>
