@@ -10,11 +10,97 @@ namespace AcDream.Core.Physics.Animation;
 // setter is read finite (a scale also within InputLimits' scale domain), so that the setter, which refuses such values,
 // never throws from inside a tick.
 
-/// <summary>Fades the object's translucency from <see cref="Start"/> to <see cref="End"/> over <see cref="Time"/> seconds
-/// (retail <c>TransparentHook</c>: <c>CPhysicsObj::SetTranslucency2</c>).</summary>
-public sealed class TransparentHook : AnimHook
+/// <summary>
+/// A fade of the whole object from <see cref="Start"/> to <see cref="End"/> over <see cref="Time"/> seconds: what
+/// <see cref="TransparentHook"/>, <see cref="LuminousHook"/> and <see cref="DiffuseHook"/> carry (retail's linker folded their
+/// <c>Pack</c> and their <c>UnPack</c> into one function each).
+/// </summary>
+public abstract class FadeHook : AnimHook
+{
+    private readonly string _name;
+
+    private protected FadeHook(string name) => _name = name;
+
+    /// <summary>The value at the start of the fade.</summary>
+    public float Start { get; private set; }
+
+    /// <summary>The value at the end of the fade.</summary>
+    public float End { get; private set; }
+
+    /// <summary>Duration of the fade, seconds.</summary>
+    public float Time { get; private set; }
+
+    private protected override int BodySize => 12;
+
+    // retail: DiffuseHook::Pack (acclient.c:342347)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        F32(d, ref at, Start);
+        F32(d, ref at, End);
+        F32(d, ref at, Time);
+    }
+
+    // Folded by the linker with TransparentHook's, LuminousHook's, DiffuseHook's and TextureVelocityPartHook's UnPack:
+    // three 32-bit words.
+    // retail: LuminousHook::UnPack (acclient.c:342371)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        Start = ReadFinite(ref reader, _name + " start");
+        End = ReadFinite(ref reader, _name + " end");
+        Time = ReadFinite(ref reader, _name + " time");
+    }
+}
+
+/// <summary>
+/// A fade of one part from <see cref="Start"/> to <see cref="End"/> over <see cref="Time"/> seconds: what
+/// <see cref="TransparentPartHook"/>, <see cref="LuminousPartHook"/> and <see cref="DiffusePartHook"/> carry (retail's linker
+/// folded their <c>Pack</c> and their <c>UnPack</c> into one function each).
+/// </summary>
+public abstract class PartFadeHook : AnimHook
+{
+    private readonly string _name;
+
+    private protected PartFadeHook(string name) => _name = name;
+
+    /// <summary>The part's index.</summary>
+    public uint Part { get; private set; }
+
+    /// <summary>The value at the start of the fade.</summary>
+    public float Start { get; private set; }
+
+    /// <summary>The value at the end of the fade.</summary>
+    public float End { get; private set; }
+
+    /// <summary>Duration of the fade, seconds.</summary>
+    public float Time { get; private set; }
+
+    private protected override int BodySize => 16;
+
+    // retail: DiffusePartHook::Pack (acclient.c:342433)
+    private protected override void PackBody(Span<byte> d, ref int at)
+    {
+        U32(d, ref at, Part);
+        F32(d, ref at, Start);
+        F32(d, ref at, End);
+        F32(d, ref at, Time);
+    }
+
+    // Folded by the linker with LuminousPartHook's and DiffusePartHook's UnPack: part, start, end, time.
+    // retail: TransparentPartHook::UnPack (acclient.c:342394)
+    private protected override void UnPackBody(ref RetailDataReader reader)
+    {
+        Part = reader.ReadUInt32(_name + " part");
+        Start = ReadFinite(ref reader, _name + " start");
+        End = ReadFinite(ref reader, _name + " end");
+        Time = ReadFinite(ref reader, _name + " time");
+    }
+}
+
+/// <summary>Fades the object's translucency (retail <c>TransparentHook</c>: <c>CPhysicsObj::SetTranslucency2</c>).</summary>
+public sealed class TransparentHook : FadeHook
 {
     internal TransparentHook()
+        : base(nameof(TransparentHook))
     {
     }
 
@@ -23,133 +109,48 @@ public sealed class TransparentHook : AnimHook
     // retail: TransparentHook::GetType (acclient.c:665892)
     public override AnimHookType HookType => AnimHookType.Transparent;
 
-    /// <summary>Translucency at the start of the fade.</summary>
-    public float Start { get; private set; }
-
-    /// <summary>Translucency at the end of the fade.</summary>
-    public float End { get; private set; }
-
-    /// <summary>Duration of the fade, seconds.</summary>
-    public float Time { get; private set; }
-
-    private protected override int BodySize => 12;
-
-    // retail: DiffuseHook::Pack (acclient.c:342347)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        F32(d, ref at, Start);
-        F32(d, ref at, End);
-        F32(d, ref at, Time);
-    }
-
     /// <inheritdoc />
     // retail: TransparentHook::Execute (acclient.c:342341)
     public override void Execute(PhysicsObj obj) => obj.SetTranslucency2(Start, End, Time);
-
-    // Folded by the linker with TransparentHook's, LuminousHook's, DiffuseHook's and TextureVelocityPartHook's UnPack:
-    // three 32-bit words.
-    // retail: LuminousHook::UnPack (acclient.c:342371)
-    private protected override void UnPackBody(ref RetailDataReader reader)
-    {
-        Start = ReadFinite(ref reader, "TransparentHook start");
-        End = ReadFinite(ref reader, "TransparentHook end");
-        Time = ReadFinite(ref reader, "TransparentHook time");
-    }
 }
 
 /// <summary>Fades one part's translucency (retail <c>TransparentPartHook</c>: <c>CPhysicsObj::SetPartTranslucency</c>).</summary>
-public sealed class TransparentPartHook : AnimHook
+public sealed class TransparentPartHook : PartFadeHook
 {
     internal TransparentPartHook()
+        : base(nameof(TransparentPartHook))
     {
     }
 
     /// <inheritdoc />
     public override AnimHookType HookType => AnimHookType.TransparentPart;
 
-    /// <summary>The part's index.</summary>
-    public uint Part { get; private set; }
-
-    /// <summary>Translucency at the start of the fade.</summary>
-    public float Start { get; private set; }
-
-    /// <summary>Translucency at the end of the fade.</summary>
-    public float End { get; private set; }
-
-    /// <summary>Duration of the fade, seconds.</summary>
-    public float Time { get; private set; }
-
-    private protected override int BodySize => 16;
-
-    // retail: DiffusePartHook::Pack (acclient.c:342433)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, Part);
-        F32(d, ref at, Start);
-        F32(d, ref at, End);
-        F32(d, ref at, Time);
-    }
-
     /// <inheritdoc />
     // retail: TransparentPartHook::Execute (acclient.c:342388)
     public override void Execute(PhysicsObj obj) => obj.SetPartTranslucency(Part, Start, End, Time);
-
-    // retail: TransparentPartHook::UnPack (acclient.c:342394)
-    private protected override void UnPackBody(ref RetailDataReader reader)
-    {
-        Part = reader.ReadUInt32("TransparentPartHook part");
-        Start = ReadFinite(ref reader, "TransparentPartHook start");
-        End = ReadFinite(ref reader, "TransparentPartHook end");
-        Time = ReadFinite(ref reader, "TransparentPartHook time");
-    }
 }
 
 /// <summary>Fades the object's luminosity (retail <c>LuminousHook</c>: <c>CPhysicsObj::SetLuminosity</c>).</summary>
-public sealed class LuminousHook : AnimHook
+public sealed class LuminousHook : FadeHook
 {
     internal LuminousHook()
+        : base(nameof(LuminousHook))
     {
     }
 
     /// <inheritdoc />
     public override AnimHookType HookType => AnimHookType.Luminous;
 
-    /// <summary>Luminosity at the start of the fade.</summary>
-    public float Start { get; private set; }
-
-    /// <summary>Luminosity at the end of the fade.</summary>
-    public float End { get; private set; }
-
-    /// <summary>Duration of the fade, seconds.</summary>
-    public float Time { get; private set; }
-
-    private protected override int BodySize => 12;
-
-    // retail: DiffuseHook::Pack (acclient.c:342347)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        F32(d, ref at, Start);
-        F32(d, ref at, End);
-        F32(d, ref at, Time);
-    }
-
     /// <inheritdoc />
     // retail: LuminousHook::Execute (acclient.c:342421)
     public override void Execute(PhysicsObj obj) => obj.SetLuminosity(Start, End, Time);
-
-    // retail: LuminousHook::UnPack (acclient.c:342371)
-    private protected override void UnPackBody(ref RetailDataReader reader)
-    {
-        Start = ReadFinite(ref reader, "LuminousHook start");
-        End = ReadFinite(ref reader, "LuminousHook end");
-        Time = ReadFinite(ref reader, "LuminousHook time");
-    }
 }
 
 /// <summary>Fades one part's luminosity (retail <c>LuminousPartHook</c>: <c>CPhysicsObj::SetPartLuminosity</c>).</summary>
-public sealed class LuminousPartHook : AnimHook
+public sealed class LuminousPartHook : PartFadeHook
 {
     internal LuminousPartHook()
+        : base(nameof(LuminousPartHook))
     {
     }
 
@@ -157,133 +158,41 @@ public sealed class LuminousPartHook : AnimHook
     // retail: LuminousPartHook::GetType (acclient.c:342053)
     public override AnimHookType HookType => AnimHookType.LuminousPart;
 
-    /// <summary>The part's index.</summary>
-    public uint Part { get; private set; }
-
-    /// <summary>Luminosity at the start of the fade.</summary>
-    public float Start { get; private set; }
-
-    /// <summary>Luminosity at the end of the fade.</summary>
-    public float End { get; private set; }
-
-    /// <summary>Duration of the fade, seconds.</summary>
-    public float Time { get; private set; }
-
-    private protected override int BodySize => 16;
-
-    // retail: DiffusePartHook::Pack (acclient.c:342433)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, Part);
-        F32(d, ref at, Start);
-        F32(d, ref at, End);
-        F32(d, ref at, Time);
-    }
-
     /// <inheritdoc />
     // retail: LuminousPartHook::Execute (acclient.c:342415)
     public override void Execute(PhysicsObj obj) => obj.SetPartLuminosity(Part, Start, End, Time);
-
-    // Folded with TransparentPartHook::UnPack: part, start, end, time.
-    // retail: TransparentPartHook::UnPack (acclient.c:342394)
-    private protected override void UnPackBody(ref RetailDataReader reader)
-    {
-        Part = reader.ReadUInt32("LuminousPartHook part");
-        Start = ReadFinite(ref reader, "LuminousPartHook start");
-        End = ReadFinite(ref reader, "LuminousPartHook end");
-        Time = ReadFinite(ref reader, "LuminousPartHook time");
-    }
 }
 
 /// <summary>Fades the object's diffusion (retail <c>DiffuseHook</c>: <c>CPhysicsObj::SetDiffusion</c>).</summary>
-public sealed class DiffuseHook : AnimHook
+public sealed class DiffuseHook : FadeHook
 {
     internal DiffuseHook()
+        : base(nameof(DiffuseHook))
     {
     }
 
     /// <inheritdoc />
     public override AnimHookType HookType => AnimHookType.Diffuse;
 
-    /// <summary>Diffusion at the start of the fade.</summary>
-    public float Start { get; private set; }
-
-    /// <summary>Diffusion at the end of the fade.</summary>
-    public float End { get; private set; }
-
-    /// <summary>Duration of the fade, seconds.</summary>
-    public float Time { get; private set; }
-
-    private protected override int BodySize => 12;
-
-    // retail: DiffuseHook::Pack (acclient.c:342347)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        F32(d, ref at, Start);
-        F32(d, ref at, End);
-        F32(d, ref at, Time);
-    }
-
     /// <inheritdoc />
     // retail: DiffuseHook::Execute (acclient.c:342461)
     public override void Execute(PhysicsObj obj) => obj.SetDiffusion(Start, End, Time);
-
-    // Folded with LuminousHook::UnPack: three 32-bit words.
-    // retail: LuminousHook::UnPack (acclient.c:342371)
-    private protected override void UnPackBody(ref RetailDataReader reader)
-    {
-        Start = ReadFinite(ref reader, "DiffuseHook start");
-        End = ReadFinite(ref reader, "DiffuseHook end");
-        Time = ReadFinite(ref reader, "DiffuseHook time");
-    }
 }
 
 /// <summary>Fades one part's diffusion (retail <c>DiffusePartHook</c>: <c>CPhysicsObj::SetPartDiffusion</c>).</summary>
-public sealed class DiffusePartHook : AnimHook
+public sealed class DiffusePartHook : PartFadeHook
 {
     internal DiffusePartHook()
+        : base(nameof(DiffusePartHook))
     {
     }
 
     /// <inheritdoc />
     public override AnimHookType HookType => AnimHookType.DiffusePart;
 
-    /// <summary>The part's index.</summary>
-    public uint Part { get; private set; }
-
-    /// <summary>Diffusion at the start of the fade.</summary>
-    public float Start { get; private set; }
-
-    /// <summary>Diffusion at the end of the fade.</summary>
-    public float End { get; private set; }
-
-    /// <summary>Duration of the fade, seconds.</summary>
-    public float Time { get; private set; }
-
-    private protected override int BodySize => 16;
-
-    // retail: DiffusePartHook::Pack (acclient.c:342433)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, Part);
-        F32(d, ref at, Start);
-        F32(d, ref at, End);
-        F32(d, ref at, Time);
-    }
-
     /// <inheritdoc />
     // retail: DiffusePartHook::Execute (acclient.c:342427)
     public override void Execute(PhysicsObj obj) => obj.SetPartDiffusion(Part, Start, End, Time);
-
-    // Folded with TransparentPartHook::UnPack: part, start, end, time.
-    // retail: TransparentPartHook::UnPack (acclient.c:342394)
-    private protected override void UnPackBody(ref RetailDataReader reader)
-    {
-        Part = reader.ReadUInt32("DiffusePartHook part");
-        Start = ReadFinite(ref reader, "DiffusePartHook start");
-        End = ReadFinite(ref reader, "DiffusePartHook end");
-        Time = ReadFinite(ref reader, "DiffusePartHook time");
-    }
 }
 
 /// <summary>Scales the object to <see cref="End"/> over <see cref="Time"/> seconds (retail <c>ScaleHook</c>:
