@@ -90,23 +90,10 @@ internal ref struct RetailDataReader
         return new Vector3(x, y, z);
     }
 
-    /// <summary>Retail <c>AFrame::UnPack</c> (acclient.c:467618): origin x, y, z, then the quaternion w, x, y, z, and retail's
-    /// <c>AFrame::IsValid</c> (acclient.c:467555) on the result: a NaN, or |q|² further than 5 × 0.0002 from 1, is a format
-    /// error. An infinite component is one too (retail's test lets an infinite origin through; the library's
-    /// <see cref="Frame"/> refuses it).</summary>
-    public Frame ReadFrame(string what = "frame")
-    {
-        int at = _offset;
-        Vector3 origin = ReadVector3(what);
-        float w = ReadSingle(what), x = ReadSingle(what), y = ReadSingle(what), z = ReadSingle(what);
-        if (!float.IsFinite(origin.X) || !float.IsFinite(origin.Y) || !float.IsFinite(origin.Z)
-            || !float.IsFinite(w) || !float.IsFinite(x) || !float.IsFinite(y) || !float.IsFinite(z))
-            throw ErrorAt(at, $"{what} is not finite");
-        float norm = z * z + y * y + x * x + w * w;
-        if (0.00019999999 * 5.0 < Math.Abs(norm - 1.0))
-            throw ErrorAt(at, $"{what} rotation is not a unit quaternion (|q|² = {norm})");
-        return new Frame(origin, new Quaternion(x, y, z, w));
-    }
+    /// <summary>Retail <c>AFrame::UnPack</c> (acclient.c:467618) and <c>AFrame::IsValid</c> (467555) through
+    /// <see cref="Animation.AFrame"/>'s reader, as a library <see cref="Frame"/> (the rotation normalised by <c>set_rotate</c>):
+    /// a NaN or infinite component, or |q|² further than 5 × 0.0002 from 1, is a format error.</summary>
+    public Frame ReadFrame(string what = "frame") => Animation.AFrame.Read(ref this, what).ToFrame();
 
     /// <summary>
     /// A 32-bit element count, checked before anything is sized by it: each element takes at least

@@ -35,7 +35,10 @@ namespace AcDream.Core.Physics.Input;
 public sealed class PlayerInput
 {
     // Retail MIN_JUMP_EXTENT (acclient_data.h: 0.001).
-    private const float MinJumpExtent = 0.001f;
+    internal const float MinJumpExtent = 0.001f;
+
+    // The power bar's fill time in that style, seconds (1 s in the others).
+    internal const double FastPowerBarSeconds = 0.8;
 
     // The style whose power bar fills in 0.8 s instead of 1 s (ClientCombatSystem::GetPowerBarLevel, acclient.c:407918).
     private const MotionCommand FastPowerBarStyle = (MotionCommand)0x80000046u;
@@ -392,7 +395,7 @@ public sealed class PlayerInput
     // retail: ClientCombatSystem::GetPowerBarLevel (acclient.c:407918)
     private double GetPowerBarLevel()
     {
-        double full = _interp.InterpretedState.CurrentStyle == FastPowerBarStyle ? 0.8 : 1.0;
+        double full = _interp.InterpretedState.CurrentStyle == FastPowerBarStyle ? FastPowerBarSeconds : 1.0;
         double level = (_player.World.CurrentTime - _buildStartTime) / full;
         if (level <= 1.0)
         {
