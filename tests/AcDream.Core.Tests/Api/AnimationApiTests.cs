@@ -2,9 +2,9 @@ using System;
 using System.Linq;
 using System.Reflection;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Api;
 

@@ -8,6 +8,7 @@ using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Behavior;
 

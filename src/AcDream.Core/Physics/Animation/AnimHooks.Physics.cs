@@ -1,8 +1,8 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Animation;
 

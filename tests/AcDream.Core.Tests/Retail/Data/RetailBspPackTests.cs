@@ -6,6 +6,7 @@ using AcDream.Core.Physics.Data;
 using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Retail.Data;
 

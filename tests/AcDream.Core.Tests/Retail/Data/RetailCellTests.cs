@@ -9,6 +9,7 @@ using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Retail.Data;
 
