@@ -1,8 +1,8 @@
 using System;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Tests.Support;
-using AcDream.Core.Tests.Support.Data;
 using FsCheck;
 using FsCheck.Fluent;
 using Xunit;

@@ -4,7 +4,7 @@ using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;
 
-namespace AcDream.Core.Tests.Support.Data;
+namespace AcDream.Core.Fixtures.Data;
 
 /// <summary>
 /// Builds data-file entry bytes to the decompiled layouts, field by field (little-endian, as retail's <c>Pack</c> writes):
