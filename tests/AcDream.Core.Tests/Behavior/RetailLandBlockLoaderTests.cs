@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects;

@@ -1,7 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Tests.Support.Data;
+using AcDream.Core.Physics.Data;
 using Xunit;
 using AcDream.Core.Physics.Format;
 

@@ -1,7 +1,7 @@
 using System;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Tests.Support;
-using AcDream.Core.Tests.Support.Data;
 using FsCheck;
 using FsCheck.Fluent;
 using Xunit;

@@ -5,7 +5,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Tests.Support.Data;
+namespace AcDream.Core.Fixtures.Data;
 
 /// <summary>
 /// Builds data-file entry bytes to the decompiled layouts, field by field (little-endian, as retail's <c>Pack</c> writes):
