@@ -101,30 +101,30 @@ public class RetailDataBenchmarks
 
     /// <summary><c>CLandBlock::UnPack</c>: 81 terrain words and heights.</summary>
     [Benchmark]
-    public RetailLandBlock LandBlock() => RetailLandBlock.Unpack(_entries[0x4040FFFF]);
+    public LandBlockEntry LandBlock() => LandBlockEntry.UnPack(_entries[0x4040FFFF]);
 
     /// <summary><c>CLandBlockInfo::UnPack</c>: 8 objects, one building.</summary>
     [Benchmark]
-    public RetailLandBlockInfo LandBlockInfo() => RetailLandBlockInfo.Unpack(_entries[0x4040FFFE]);
+    public LandBlockInfoEntry LandBlockInfo() => LandBlockInfoEntry.UnPack(_entries[0x4040FFFE]);
 
     /// <summary><c>CEnvCell::UnPack</c>: one cell (two portals, two visible cells).</summary>
     [Benchmark]
-    public RetailEnvCell EnvCell() => RetailEnvCell.Unpack(_entries[0x40400100]);
+    public EnvCellEntry EnvCell() => EnvCellEntry.UnPack(_entries[0x40400100]);
 
     /// <summary><c>CEnvironment::UnPack</c>: 16 structures (24 physics polygons, trees, portals each).</summary>
     [Benchmark]
-    public RetailEnvironment Environment() => RetailEnvironment.Unpack(_entries[0x0D000001]);
+    public EnvironmentEntry Environment() => EnvironmentEntry.UnPack(_entries[0x0D000001]);
 
     /// <summary><c>CGfxObj::Serialize</c>: the 240-polygon shell with its physics BSP and a drawing part of the same size.</summary>
     [Benchmark]
-    public RetailGfxObj GfxObj() => RetailGfxObj.Unpack(_entries[0x01000100]);
+    public GfxObjEntry GfxObj() => GfxObjEntry.UnPack(_entries[0x01000100]);
 
     /// <summary><c>CSetup::UnPack</c>: a two-part setup with two spheres.</summary>
     [Benchmark]
-    public RetailSetup Setup2() => RetailSetup.Unpack(_setup);
+    public SetupEntry Setup2() => SetupEntry.UnPack(_setup);
 
     /// <summary>The whole landblock with its 16 cells and building, into a fresh world.</summary>
     [Benchmark]
-    public RetailLandBlockContent WholeLandBlock() =>
-        RetailLandBlockLoader.Load(new WorldCells(SyntheticTerrain.Metres()), 0x4040FFFF, new Source(_entries));
+    public LandBlockContent WholeLandBlock() =>
+        LandBlockLoader.Load(new WorldCells(SyntheticTerrain.Metres()), 0x4040FFFF, new Source(_entries));
 }

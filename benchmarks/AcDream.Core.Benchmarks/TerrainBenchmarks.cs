@@ -6,6 +6,7 @@ using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
 using BenchmarkDotNet.Attributes;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Benchmarks;
 
@@ -38,11 +39,11 @@ public class TerrainBenchmarks
         if (!string.IsNullOrEmpty(dir))
         {
             _world = new TerrainWorld(TerrainDataFiles.ReadHeightTableCsv(Path.Combine(dir, "land_height_table.csv")));
-            foreach (LandBlockData d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
+            foreach (LandBlockEntry d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
             {
-                if (d.BlockId >> 24 is >= 0xA8 and <= 0xAA && ((d.BlockId >> 16) & 0xFF) is >= 0xB3 and <= 0xB5)
+                if (d.Id >> 24 is >= 0xA8 and <= 0xAA && ((d.Id >> 16) & 0xFF) is >= 0xB3 and <= 0xB5)
                 {
-                    _world.AddLandBlock(d.BlockId, d.Height, d.Terrain);
+                    _world.AddLandBlock(d.Id, d.Height, d.Terrain);
                 }
             }
         }

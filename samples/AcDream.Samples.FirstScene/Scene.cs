@@ -8,6 +8,7 @@ using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Samples.FirstScene;
 
@@ -50,12 +51,12 @@ internal static class Scene
     public static TerrainWorld LoadHoltburg(string dir)
     {
         var terrain = new TerrainWorld(TerrainDataFiles.ReadHeightTableCsv(Path.Combine(dir, "land_height_table.csv")));
-        foreach (LandBlockData d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
+        foreach (LandBlockEntry d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
         {
-            int bx = (int)(d.BlockId >> 24), by = (int)((d.BlockId >> 16) & 0xFF);
+            int bx = (int)(d.Id >> 24), by = (int)((d.Id >> 16) & 0xFF);
             if (Math.Abs(bx - BlockX) <= 1 && Math.Abs(by - BlockY) <= 1)
             {
-                terrain.AddLandBlock(d.BlockId, d.Height, d.Terrain);
+                terrain.AddLandBlock(d.Id, d.Height, d.Terrain);
             }
         }
 

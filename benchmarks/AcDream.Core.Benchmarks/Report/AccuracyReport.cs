@@ -4,6 +4,7 @@ using System.IO;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Benchmarks.Report;
 
@@ -112,7 +113,7 @@ internal static class AccuracyReport
     private static void Substeps(ReportContext ctx)
     {
         const string sw = "substep profile";
-        (LandHeightTable Table, List<LandBlockData> Blocks)? holtburg = ctx.TerrainDir is { } dir ? TerrainKit.ReadHoltburg(dir) : null;
+        (LandHeightTable Table, List<LandBlockEntry> Blocks)? holtburg = ctx.TerrainDir is { } dir ? TerrainKit.ReadHoltburg(dir) : null;
         foreach (Pacing pacing in Pacing.All)
         {
             foreach (PhysicsProfile p in new[] { Retail, Ace })

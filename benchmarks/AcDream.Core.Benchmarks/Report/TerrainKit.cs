@@ -8,6 +8,7 @@ using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support.Shared;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Benchmarks.Report;
 
@@ -29,10 +30,10 @@ internal static class TerrainKit
 
     /// <summary>The real Holtburg landblocks 0xA8B3-0xAAB5 read from <paramref name="dir"/> (parsed once; build worlds with
     /// <see cref="HoltburgWorld"/>).</summary>
-    public static (LandHeightTable Table, List<LandBlockData> Blocks) ReadHoltburg(string dir) => Holtburg.Read(dir);
+    public static (LandHeightTable Table, List<LandBlockEntry> Blocks) ReadHoltburg(string dir) => Holtburg.Read(dir);
 
     /// <summary>A fresh terrain world of the Holtburg blocks (see <see cref="Holtburg.World"/>).</summary>
-    public static TerrainWorld HoltburgWorld((LandHeightTable Table, List<LandBlockData> Blocks) data) => Holtburg.World(data);
+    public static TerrainWorld HoltburgWorld((LandHeightTable Table, List<LandBlockEntry> Blocks) data) => Holtburg.World(data);
 
     /// <summary>A physics world with <paramref name="profile"/> sweeping through <paramref name="terrain"/>.</summary>
     public static PhysicsWorld World(TerrainWorld terrain, PhysicsProfile profile) =>

@@ -2,6 +2,7 @@ using System.IO;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Tests.Support;
 using Xunit;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Tests.Api;
 

@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Tests.Support;
 using Xunit;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Tests.Retail;
 
@@ -40,7 +41,7 @@ public class RealTerrainTests
     {
         // Height[0, 1, 40, 79, 80] = 120, 139, 93, 93, 110 (the values DatReaderWriter asserts against the retail dat);
         // through the table (2 * i below 201): 240, 278, 186, 186, 220 m.
-        LandBlock b = TerrainTestData.SampleBlock(0x9AB1FFFFu).Build(TerrainTestData.RealTable);
+        LandBlock b = TerrainTestData.SampleBlock(0x9AB1FFFFu).ToLandBlock(TerrainTestData.RealTable);
         int[] idx = [0, 1, 40, 79, 80];
         byte[] expectedIndex = [120, 139, 93, 93, 110];
         float[] expectedMetres = [240f, 278f, 186f, 186f, 220f];
@@ -162,10 +163,10 @@ public class RealTerrainTests
     [TerrainDataFact]
     public void TerrainPng_DecodesToTheSampleCsvExactly()
     {
-        foreach (LandBlockData sample in TerrainTestData.Sample)
+        foreach (LandBlockEntry sample in TerrainTestData.Sample)
         {
-            LandBlockData fromImage = TerrainTestData.Image.GetLandBlockData((int)(sample.BlockId >> 24), (int)((sample.BlockId >> 16) & 0xFF));
-            Assert.Equal(sample.BlockId, fromImage.BlockId);
+            LandBlockEntry fromImage = TerrainTestData.Image.GetLandBlockEntry((int)(sample.Id >> 24), (int)((sample.Id >> 16) & 0xFF));
+            Assert.Equal(sample.Id, fromImage.Id);
             Assert.Equal(sample.Height.ToArray(), fromImage.Height.ToArray());
             Assert.Equal(sample.Terrain.ToArray(), fromImage.Terrain.ToArray());
         }
@@ -180,9 +181,9 @@ public class RealTerrainTests
         {
             for (int by = 0; by < 254; by += 5)
             {
-                LandBlockData a = img.GetLandBlockData(bx, by);
-                LandBlockData e = img.GetLandBlockData(bx + 1, by);
-                LandBlockData n = img.GetLandBlockData(bx, by + 1);
+                LandBlockEntry a = img.GetLandBlockEntry(bx, by);
+                LandBlockEntry e = img.GetLandBlockEntry(bx + 1, by);
+                LandBlockEntry n = img.GetLandBlockEntry(bx, by + 1);
                 for (int k = 0; k < 9; k++)
                 {
                     Assert.Equal(a.Height[8 * 9 + k], e.Height[k]);

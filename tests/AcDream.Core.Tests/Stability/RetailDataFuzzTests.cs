@@ -38,7 +38,7 @@ public class RetailDataFuzzTests
         switch (name)
         {
             case "CSetup":
-                return RetailSetupTests.TwoPartSetup();
+                return SetupEntryTests.TwoPartSetup();
             case "CGfxObj":
                 var polys = new List<Polygon>();
                 BspScene.AddBox(polys, Vector3.Zero, new Vector3(1f, 2f, 3f));
@@ -50,14 +50,14 @@ public class RetailDataFuzzTests
             case "CEnvCell":
                 return RetailCellTests.Cell(0x70000001, [(0x02000001, AcDream.Core.Physics.Spatial.Frame.Identity)]);
             case "CLandBlock":
-                (ushort[] ter, byte[] h) = RetailLandBlockTests.Ramp();
+                (ushort[] ter, byte[] h) = LandBlockEntryTests.Ramp();
                 return RetailEntries.LandBlock(0x8080FFFF, true, ter, h);
             default:
-                return RetailLandBlockTests.Info();
+                return LandBlockEntryTests.Info();
         }
     }
 
-    private static readonly RetailEnvironment Env = RetailEnvironment.Unpack(RetailCellTests.Room().Env);
+    private static readonly EnvironmentEntry Env = EnvironmentEntry.UnPack(RetailCellTests.Room().Env);
 
     // One unpack and the conversions a loader makes; only the format exception may escape.
     private static void Read(string name, byte[] bytes)
@@ -67,22 +67,22 @@ public class RetailDataFuzzTests
             switch (name)
             {
                 case "CSetup":
-                    RetailSetup.Unpack(bytes).ToSetupPhysics();
+                    SetupEntry.UnPack(bytes).ToSetupPhysics();
                     break;
                 case "CGfxObj":
-                    _ = RetailGfxObj.Unpack(bytes).Physics;
+                    _ = GfxObjEntry.UnPack(bytes).Physics;
                     break;
                 case "CEnvironment":
-                    RetailEnvironment.Unpack(bytes);
+                    EnvironmentEntry.UnPack(bytes);
                     break;
                 case "CEnvCell":
-                    RetailEnvCell.Unpack(bytes).ToEnvCell(Env);
+                    EnvCellEntry.UnPack(bytes).ToEnvCell(Env);
                     break;
                 case "CLandBlock":
-                    RetailLandBlock.Unpack(bytes).ToLandBlock(SweepScene.MetreTable());
+                    LandBlockEntry.UnPack(bytes).ToLandBlock(SweepScene.MetreTable());
                     break;
                 default:
-                    RetailLandBlockInfo.Unpack(bytes);
+                    LandBlockInfoEntry.UnPack(bytes);
                     break;
             }
         }
@@ -182,7 +182,7 @@ public class RetailDataFuzzTests
             var cells = new AcDream.Core.Physics.Cells.WorldCells(SweepScene.Terrain());
             try
             {
-                RetailLandBlockLoader.Load(cells, 0x8080FFFF, s);
+                LandBlockLoader.Load(cells, 0x8080FFFF, s);
             }
             catch (RetailDataFormatException)
             {

@@ -4,6 +4,7 @@ using System.IO;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Tests.Support;
 
@@ -35,7 +36,7 @@ internal static class TerrainTestData
     private static readonly Lazy<LandHeightTable> RealTableLazy = new(() =>
         TerrainDataFiles.ReadHeightTableCsv(Path.Combine(Dir, "land_height_table.csv")));
 
-    private static readonly Lazy<IReadOnlyList<LandBlockData>> SampleLazy = new(() =>
+    private static readonly Lazy<IReadOnlyList<LandBlockEntry>> SampleLazy = new(() =>
         TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(Dir, "landblock_heights_sample.csv")));
 
     private static readonly Lazy<TerrainImage> ImageLazy = new(() => TerrainImage.Load(Path.Combine(Dir, "terrain.png")));
@@ -54,17 +55,17 @@ internal static class TerrainTestData
     public static LandHeightTable RealTable => RealTableLazy.Value;
 
     /// <summary>The 12 sample landblocks of landblock_heights_sample.csv.</summary>
-    public static IReadOnlyList<LandBlockData> Sample => SampleLazy.Value;
+    public static IReadOnlyList<LandBlockEntry> Sample => SampleLazy.Value;
 
     /// <summary>The whole heightfield (terrain.png).</summary>
     public static TerrainImage Image => ImageLazy.Value;
 
     /// <summary>The sample landblock with id 0xXXYYFFFF.</summary>
-    public static LandBlockData SampleBlock(uint blockId)
+    public static LandBlockEntry SampleBlock(uint blockId)
     {
-        foreach (LandBlockData d in Sample)
+        foreach (LandBlockEntry d in Sample)
         {
-            if (d.BlockId == blockId)
+            if (d.Id == blockId)
             {
                 return d;
             }
@@ -79,8 +80,8 @@ internal static class TerrainTestData
         var world = new TerrainWorld(RealTable);
         foreach (uint id in blockIds)
         {
-            LandBlockData d = SampleBlock(id);
-            world.AddLandBlock(d.BlockId, d.Height, d.Terrain);
+            LandBlockEntry d = SampleBlock(id);
+            world.AddLandBlock(d.Id, d.Height, d.Terrain);
         }
 
         return world;

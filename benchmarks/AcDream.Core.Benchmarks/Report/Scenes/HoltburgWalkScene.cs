@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support.Shared;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Benchmarks.Report;
 
@@ -16,7 +17,7 @@ internal sealed class HoltburgWalkScene : StepSceneSim
 {
     public const string Name = "walkers on Holtburg (real terrain)";
 
-    public HoltburgWalkScene((LandHeightTable Table, System.Collections.Generic.List<LandBlockData> Blocks) data, PhysicsProfile profile, Pacing? pacing, double seconds)
+    public HoltburgWalkScene((LandHeightTable Table, System.Collections.Generic.List<LandBlockEntry> Blocks) data, PhysicsProfile profile, Pacing? pacing, double seconds)
         : this(TerrainKit.HoltburgWorld(data), profile, pacing, seconds)
     {
     }

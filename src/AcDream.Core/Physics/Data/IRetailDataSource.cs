@@ -4,7 +4,7 @@ namespace AcDream.Core.Physics.Data;
 
 /// <summary>
 /// The client's data files, seen by id: the bytes of one entry (after the data-file container, which the client reads with its
-/// own library). <see cref="RetailLandBlockLoader"/> asks it for a landblock's entries: 0xXXYYFFFF, 0xXXYYFFFE, the indoor
+/// own library). <see cref="LandBlockLoader"/> asks it for a landblock's entries: 0xXXYYFFFF, 0xXXYYFFFE, the indoor
 /// cells 0xXXYY0100 onwards (client_cell.dat), and the environments (0x0Dxxxxxx) and building GfxObjs (0x01xxxxxx) they name
 /// (client_portal.dat).
 /// </summary>

@@ -45,7 +45,7 @@ public static class MovementEvent
     /// <summary>Unpacks a decoded event into <paramref name="mm"/> (its object is the event's): false, as retail, when the
     /// manager has no interpreter or no object.</summary>
     // retail: MovementManager::unpack_movement (acclient.c:339491)
-    internal static bool Unpack(MovementManager mm, MovementEventMessage m)
+    internal static bool UnPack(MovementManager mm, MovementEventMessage m)
     {
         PhysicsObj? obj = mm.PhysicsObj;
         if (mm.MotionInterpreter is null || obj is null)

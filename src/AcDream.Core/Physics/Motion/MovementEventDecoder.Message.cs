@@ -75,7 +75,7 @@ public static partial class MovementEventDecoder
         {
             case 0:
                 m.MovementType = MovementEventType.InterpretedMotion;
-                UnpackInterpretedState(ref r, m.State);
+                UnPackInterpretedState(ref r, m.State);
                 if ((flags & 0x01) != 0)
                 {
                     m.StickToObject = r.ReadUInt32("sticky object");
@@ -91,19 +91,19 @@ public static partial class MovementEventDecoder
                     m.TargetId = r.ReadUInt32("target object");
                 }
 
-                m.Origin = UnpackOrigin(ref r);
-                m.Parameters = UnpackNet(ref r, (MovementEventType)type);
+                m.Origin = UnPackOrigin(ref r);
+                m.Parameters = UnPackNet(ref r, (MovementEventType)type);
                 m.RunRate = r.ReadFiniteSingle("run rate");
                 break;
             case 8:
                 m.MovementType = MovementEventType.TurnToObject;
                 m.TargetId = r.ReadUInt32("target object");
                 m.TurnToObjectHeading = r.ReadFiniteSingle("heading");
-                m.Parameters = UnpackNet(ref r, MovementEventType.TurnToObject);
+                m.Parameters = UnPackNet(ref r, MovementEventType.TurnToObject);
                 break;
             case 9:
                 m.MovementType = MovementEventType.TurnToHeading;
-                m.Parameters = UnpackNet(ref r, MovementEventType.TurnToHeading);
+                m.Parameters = UnPackNet(ref r, MovementEventType.TurnToHeading);
                 break;
             default:
                 throw r.ErrorAt(typeAt, $"movement type {type} is not 0, 6, 7, 8 or 9");
@@ -116,7 +116,7 @@ public static partial class MovementEventDecoder
     }
 
     // retail: Position::UnPackOrigin (acclient.c:467193): the cell and the origin; the rotation stays the identity
-    private static Position UnpackOrigin(ref RetailDataReader r)
+    private static Position UnPackOrigin(ref RetailDataReader r)
     {
         uint cell = r.ReadUInt32("origin cell");
         float x = r.ReadFiniteSingle("origin x");
@@ -127,7 +127,7 @@ public static partial class MovementEventDecoder
 
     // The move-to (types 6, 7) or turn-to (8, 9) parameters as the network sends them (MovementParameters::UnPackNet); the
     // fields not sent keep retail's defaults.
-    private static MovementParameters UnpackNet(ref RetailDataReader r, MovementEventType type)
+    private static MovementParameters UnPackNet(ref RetailDataReader r, MovementEventType type)
     {
         var p = new MovementParameters();
         p.UnPackNet(ref r, (MovementType)type);

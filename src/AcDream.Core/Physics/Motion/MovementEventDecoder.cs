@@ -55,7 +55,7 @@ public static partial class MovementEventDecoder
                 return false;
             }
 
-            UnpackInterpretedState(ref r, state);
+            UnPackInterpretedState(ref r, state);
             uint stick = (word & 0x100) != 0 ? r.ReadUInt32("sticky object") : 0u;
             header = header with { StickToObject = stick };
             return r.Remaining == 0;
@@ -86,7 +86,7 @@ public static partial class MovementEventDecoder
         try
         {
             r.Skip(offset);
-            UnpackInterpretedState(ref r, state);
+            UnPackInterpretedState(ref r, state);
             offset = r.Offset;
             return true;
         }
@@ -97,7 +97,7 @@ public static partial class MovementEventDecoder
     }
 
     // retail: InterpretedMotionState::UnPack (acclient.c:333444), through the bounds-checked reader
-    internal static void UnpackInterpretedState(ref RetailDataReader r, InterpretedMotionState state)
+    internal static void UnPackInterpretedState(ref RetailDataReader r, InterpretedMotionState state)
     {
         state.Reset();
         uint flags = r.ReadUInt32("InterpretedMotionState flags");

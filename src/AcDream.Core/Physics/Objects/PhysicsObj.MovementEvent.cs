@@ -58,7 +58,7 @@ public sealed partial class PhysicsObj
         }
 
         _lastMoveWasAutonomous = message.Autonomous;
-        return UnpackMovement(message) ? MovementEventResult.Applied : MovementEventResult.NotApplied;
+        return UnPackMovement(message) ? MovementEventResult.Applied : MovementEventResult.NotApplied;
     }
 
     // Every refusal before anything changes: the entry point's ArgumentException contract.
@@ -107,7 +107,7 @@ public sealed partial class PhysicsObj
     /// <summary>Creates the movement manager when absent (without its default state, as retail) and unpacks the movement
     /// into it.</summary>
     // retail: CPhysicsObj::unpack_movement (acclient.c:319253)
-    private bool UnpackMovement(MovementEventMessage message)
+    private bool UnPackMovement(MovementEventMessage message)
     {
         Touch();
         if (Movement is null)
@@ -117,7 +117,7 @@ public sealed partial class PhysicsObj
             MakeMovementManager(true);
         }
 
-        return Movement is MovementManager mm && MovementEvent.Unpack(mm, message);
+        return Movement is MovementManager mm && MovementEvent.UnPack(mm, message);
     }
 
     /// <summary>Starts a motion command as this client's own (retail <c>CPhysicsObj::DoMotion</c>):

@@ -47,7 +47,7 @@ public class RetailCellTests
     [Fact]
     public void Environment_HoldsEachStructure_InOrder()
     {
-        RetailEnvironment e = RetailEnvironment.Unpack(Room().Env);
+        EnvironmentEntry e = EnvironmentEntry.UnPack(Room().Env);
         Assert.Equal(0x0D000042u, e.Id);
         Assert.Equal(2, e.CellStructs.Length);
         Assert.Equal(7u, e.CellStructs[0].CellStructId);
@@ -61,7 +61,7 @@ public class RetailCellTests
     public void CellStruct_Vertices_PortalPolygons_AndPhysicsPolygons()
     {
         (byte[] env, RetailCellStructParts parts) = Room();
-        RetailCellStruct s = RetailEnvironment.Unpack(env).CellStructs[0];
+        CellStructEntry s = EnvironmentEntry.UnPack(env).CellStructs[0];
         Assert.Equal(parts.VertexCount, s.Vertices.Length);
         Assert.Equal(2, s.PolygonCount);
         Assert.Equal(1, s.Portals.Length);
@@ -77,7 +77,7 @@ public class RetailCellTests
     public void CellStruct_CellBsp_IsTheStoredPlaneChain_EndingInALeaf()
     {
         (byte[] env, RetailCellStructParts parts) = Room();
-        BspTree cell = RetailEnvironment.Unpack(env).CellStructs[0].CellBsp;
+        BspTree cell = EnvironmentEntry.UnPack(env).CellStructs[0].CellBsp;
         // Six 'BPIn' nodes, each the positive child of the one before, then the leaf the layout needs at the end.
         Assert.Equal(7, cell.Nodes.Length);
         for (int i = 0; i < 6; i++)
@@ -95,9 +95,9 @@ public class RetailCellTests
     [Fact]
     public void EnvCell_Ids_Surfaces_EnvironmentAndFrame()
     {
-        RetailEnvCell c = RetailEnvCell.Unpack(Cell());
+        EnvCellEntry c = EnvCellEntry.UnPack(Cell());
         Assert.Equal(0xA9B40143u, c.Id);
-        Assert.Equal(1u, c.Flags & RetailEnvCell.SeenOutsideFlag);
+        Assert.Equal(1u, c.Flags & EnvCellEntry.SeenOutsideFlag);
         Assert.Equal(new uint[] { 0x08000101, 0x08000102 }, c.SurfaceIds.ToArray());
         Assert.Equal(0x0D000042u, c.EnvironmentId);
         Assert.Equal(0, c.CellStructIndex);
@@ -108,7 +108,7 @@ public class RetailCellTests
     [Fact]
     public void EnvCell_Portals_AndVisibleCells()
     {
-        RetailEnvCell c = RetailEnvCell.Unpack(Cell());
+        EnvCellEntry c = EnvCellEntry.UnPack(Cell());
         // Flags 7: exact match, portal side 0 (bit 2), outdoors (bit 4: other cell -1 whatever the stored word).
         Assert.Equal(CellPortal.OutsideCellId, c.Portals[0].OtherCellId);
         Assert.True(c.Portals[0].ExactMatch);
@@ -124,19 +124,19 @@ public class RetailCellTests
     public void EnvCell_StaticObjects_AndRestriction()
     {
         var f = new Frame(new Vector3(131f, 12f, 94f), Quaternion.Identity);
-        RetailEnvCell c = RetailEnvCell.Unpack(Cell(0x7000_0001, [(0x02000AB1, f)]));
+        EnvCellEntry c = EnvCellEntry.UnPack(Cell(0x7000_0001, [(0x02000AB1, f)]));
         Assert.Equal(0x02000AB1u, c.StaticObjects[0].Id);
         Assert.Equal(f.Origin, c.StaticObjects[0].Frame.Origin);
         Assert.Equal(0x70000001u, c.RestrictionObject);
-        Assert.True(RetailEnvCell.Unpack(Cell()).StaticObjects.IsEmpty);
-        Assert.Equal(0u, RetailEnvCell.Unpack(Cell()).RestrictionObject);
+        Assert.True(EnvCellEntry.UnPack(Cell()).StaticObjects.IsEmpty);
+        Assert.Equal(0u, EnvCellEntry.UnPack(Cell()).RestrictionObject);
     }
 
     [Fact]
     public void ToEnvCell_PlacesTheStructure_AndLooksUpThePortalPolygonsById()
     {
-        RetailEnvironment e = RetailEnvironment.Unpack(Room().Env);
-        EnvCell cell = RetailEnvCell.Unpack(Cell()).ToEnvCell(e);
+        EnvironmentEntry e = EnvironmentEntry.UnPack(Room().Env);
+        EnvCell cell = EnvCellEntry.UnPack(Cell()).ToEnvCell(e);
         Assert.Equal(0xA9B40143u, cell.CellId);
         Assert.Same(e.CellStructs[0].Structure, cell.Structure);
         Assert.Same(e.CellStructs[0].Portals[0], cell.Portals[0].Portal);
@@ -148,9 +148,9 @@ public class RetailCellTests
     [Fact]
     public void APortalNamingAPolygonNotAmongThePortals_IsAFormatError()
     {
-        RetailEnvironment e = RetailEnvironment.Unpack(Room().Env);
+        EnvironmentEntry e = EnvironmentEntry.UnPack(Room().Env);
         byte[] bytes = RetailEntries.EnvCell(0xA9B40143, 0, 0x42, 0, CellFrame, [new PortalDef(1, 0, 0x0144, 0)]);
-        var ex = Assert.Throws<RetailDataFormatException>(() => RetailEnvCell.Unpack(bytes).ToEnvCell(e));
+        var ex = Assert.Throws<RetailDataFormatException>(() => EnvCellEntry.UnPack(bytes).ToEnvCell(e));
         Assert.Contains("polygon 0", ex.Reason);
         // entry id 4, flags 4, cell id 4, counts 4, environment 2, index 2, frame 28 = 48: the portal; its polygon id at 50.
         Assert.Equal(50, ex.Offset);
@@ -160,7 +160,7 @@ public class RetailCellTests
     public void ACellIdThatIsNotIndoor_IsAFormatError_AtTheInnerId()
     {
         byte[] bytes = RetailEntries.EnvCell(0xA9B40010, 0, 0x42, 0, CellFrame, []);
-        var ex = Assert.Throws<RetailDataFormatException>(() => RetailEnvCell.Unpack(bytes));
+        var ex = Assert.Throws<RetailDataFormatException>(() => EnvCellEntry.UnPack(bytes));
         Assert.Equal(8, ex.Offset);
     }
 
@@ -172,7 +172,7 @@ public class RetailCellTests
         (_, PolyDef[] physDefs) = RetailEntries.Defs(phys.Polygons.ToArray(), verts);
         byte[] env = RetailEntries.Environment(0x0D000001, w => RetailEntries.CellStruct(w, 0, verts, [new PolyDef(0, [0, 1, 2])], [1],
             BspBuilder.BuildCell(BspBuilder.BoxCellPlanes(Vector3.Zero, Vector3.One)), physDefs, phys));
-        var ex = Assert.Throws<RetailDataFormatException>(() => RetailEnvironment.Unpack(env));
+        var ex = Assert.Throws<RetailDataFormatException>(() => EnvironmentEntry.UnPack(env));
         Assert.Contains("portal polygon index 1", ex.Reason);
     }
 }

@@ -38,7 +38,7 @@ public class RetailGeometryDumpTests
         {
             Frame frame = CellarScene.FrameOf(d.WorldTransform);
             Polygon[] today = CellarScene.PolygonsOf(d.PhysicsPolygons);
-            (EnvCell cell, RetailEnvCell entry, RetailEnvironment env) = CellarScene.Unpacked(d, frame, BspBuilder.Build(today),
+            (EnvCell cell, EnvCellEntry entry, EnvironmentEntry env) = CellarScene.Unpacked(d, frame, BspBuilder.Build(today),
                 BspBuilder.BuildCell(CellarScene.CellPlanesOf(d)), dumps);
 
             // Physics polygons: the dump's vertices, make_plane's plane.
@@ -81,7 +81,7 @@ public class RetailGeometryDumpTests
         DumpPolygon[] shell = CellDump.ReadGfxObjPolygons(Path.Combine(GeometryTestData.Dir!, "cellar-ascent", "0x01000A2B.gfxobj.json"));
         BspTree built = BspBuilder.Build(CellarScene.PolygonsOf(shell));
         (List<Vector3> verts, PolyDef[] defs) = RetailEntries.Defs(built.Polygons.ToArray());
-        RetailGfxObj g = RetailGfxObj.Unpack(RetailEntries.GfxObj(0x01000A2B, verts, defs, built, Vector3.Zero));
+        GfxObjEntry g = GfxObjEntry.UnPack(RetailEntries.GfxObj(0x01000A2B, verts, defs, built, Vector3.Zero));
         Assert.Equal(74, g.PhysicsPolygons.Length);   // README: 74 physics polys
         Assert.Equal(61, g.Vertices.Length);          // README: 61 distinct vertices
         foreach (Polygon p in g.PhysicsPolygons)

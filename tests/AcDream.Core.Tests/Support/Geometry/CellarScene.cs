@@ -123,7 +123,7 @@ internal sealed class CellarScene
         if (throughRetailBytes)
         {
             (List<Vector3> verts, PolyDef[] defs) = RetailEntries.Defs(shellBsp.Polygons.ToArray());
-            shellPhysics = RetailGfxObj.Unpack(RetailEntries.GfxObj(0x01000A2B, verts, defs, shellBsp, Vector3.Zero)).Physics!;
+            shellPhysics = GfxObjEntry.UnPack(RetailEntries.GfxObj(0x01000A2B, verts, defs, shellBsp, Vector3.Zero)).Physics!;
         }
 
         var part = new PhysicsPart(shellPhysics, new Position(landCell, bf), Vector3.One);
@@ -149,7 +149,7 @@ internal sealed class CellarScene
         Unpacked(d, frame, physicsBsp, cellBsp, dumps).Cell;
 
     /// <summary>As <see cref="ThroughRetailBytes"/>, with the unpacked entries.</summary>
-    public static (EnvCell Cell, RetailEnvCell Entry, RetailEnvironment Environment) Unpacked(CellDump d, in Frame frame, BspTree physicsBsp,
+    public static (EnvCell Cell, EnvCellEntry Entry, EnvironmentEntry Environment) Unpacked(CellDump d, in Frame frame, BspTree physicsBsp,
         BspTree cellBsp, List<CellDump> dumps)
     {
         var verts = new List<Vector3>();
@@ -179,8 +179,8 @@ internal sealed class CellarScene
         byte[] env = RetailEntries.Environment(0x0D000000u | low,
             w => RetailEntries.CellStruct(w, 0, verts, drawing, portalList.ToArray(), cellBsp, physics, physicsBsp));
         byte[] cell = RetailEntries.EnvCell(d.CellId, 0, low, 0, frame, portals);
-        RetailEnvironment e = RetailEnvironment.Unpack(env);
-        RetailEnvCell c = RetailEnvCell.Unpack(cell);
+        EnvironmentEntry e = EnvironmentEntry.UnPack(env);
+        EnvCellEntry c = EnvCellEntry.UnPack(cell);
         return (c.ToEnvCell(e), c, e);
     }
 

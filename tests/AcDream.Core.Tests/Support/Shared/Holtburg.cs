@@ -2,6 +2,7 @@ using System.Collections.Generic;
 using System.IO;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Tests.Support.Shared;
 
@@ -10,12 +11,12 @@ namespace AcDream.Core.Tests.Support.Shared;
 internal static class Holtburg
 {
     /// <summary>The Holtburg landblocks read from <paramref name="dir"/> (parsed once; build worlds with <see cref="World"/>).</summary>
-    public static (LandHeightTable Table, List<LandBlockData> Blocks) Read(string dir)
+    public static (LandHeightTable Table, List<LandBlockEntry> Blocks) Read(string dir)
     {
-        var blocks = new List<LandBlockData>();
-        foreach (LandBlockData d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
+        var blocks = new List<LandBlockEntry>();
+        foreach (LandBlockEntry d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
         {
-            if (d.BlockId >> 24 is >= 0xA8 and <= 0xAA && ((d.BlockId >> 16) & 0xFF) is >= 0xB3 and <= 0xB5)
+            if (d.Id >> 24 is >= 0xA8 and <= 0xAA && ((d.Id >> 16) & 0xFF) is >= 0xB3 and <= 0xB5)
             {
                 blocks.Add(d);
             }
@@ -28,12 +29,12 @@ internal static class Holtburg
     /// A fresh terrain world of the Holtburg blocks, in file order. Each scene run needs its own: land cells hold the shadows of
     /// the objects in them, so a terrain world shared by two physics worlds would let one world's objects collide with the other's.
     /// </summary>
-    public static TerrainWorld World((LandHeightTable Table, List<LandBlockData> Blocks) data)
+    public static TerrainWorld World((LandHeightTable Table, List<LandBlockEntry> Blocks) data)
     {
         var world = new TerrainWorld(data.Table);
-        foreach (LandBlockData d in data.Blocks)
+        foreach (LandBlockEntry d in data.Blocks)
         {
-            world.AddLandBlock(d.BlockId, d.Height, d.Terrain);
+            world.AddLandBlock(d.Id, d.Height, d.Terrain);
         }
 
         return world;

@@ -13,8 +13,8 @@ namespace AcDream.Core.Physics.Collision.Bsp;
 /// </summary>
 /// <remarks>
 /// <para>For hand-made geometry only (tests, samples, scenes without the game's data files). With the data files, collision runs
-/// through the retail trees as stored — unpacked by <see cref="Data.RetailGfxObj"/>, <see cref="Data.RetailEnvironment"/> and
-/// <see cref="Data.RetailLandBlockLoader"/> (node order, splitting planes, leaf lists, solid leaves and spheres as retail
+/// through the retail trees as stored — unpacked by <see cref="Data.GfxObjEntry"/>, <see cref="Data.EnvironmentEntry"/> and
+/// <see cref="Data.LandBlockLoader"/> (node order, splitting planes, leaf lists, solid leaves and spheres as retail
 /// has them) — never through a tree built here.</para>
 /// <para>Physics trees: each split plane is axis-aligned, through the median polygon centroid on the longest axis of the
 /// centroids' box. A polygon that straddles a plane is listed in both children (polygons are never cut), so every leaf

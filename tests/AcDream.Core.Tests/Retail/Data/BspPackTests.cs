@@ -15,7 +15,7 @@ namespace AcDream.Core.Tests.Retail.Data;
 /// 364091, <c>BSPPORTAL::PackPortal</c> 364589 and their sizes) against the unpack: a round trip, and the same bytes the
 /// tests' writer produces by following the unpack field by field.
 /// </summary>
-public class RetailBspPackTests
+public class BspPackTests
 {
     private static BspTree Tree()
     {
@@ -36,9 +36,9 @@ public class RetailBspPackTests
     public void APhysicsTree_RoundTrips_NodeForNode()
     {
         BspTree t = Tree();
-        byte[] bytes = RetailBspPack.Pack(t, RetailBspKind.Physics);
+        byte[] bytes = BspPack.Pack(t, BspKind.Physics);
         var r = new RetailDataReader(bytes, "BSPTREE");
-        BspTree back = RetailBsp.UnpackTree(ref r, RetailBspKind.Physics, t.Polygons.ToArray(), t.Polygons.Length)!;
+        BspTree back = BspReader.UnPackTree(ref r, BspKind.Physics, t.Polygons.ToArray(), t.Polygons.Length)!;
         Assert.Equal(0, r.Remaining); // pack_child_size is exactly what the unpack consumes
         Assert.Equal(t.Nodes.Length, back.Nodes.Length);
         for (int i = 0; i < t.Nodes.Length; i++)
@@ -60,7 +60,7 @@ public class RetailBspPackTests
         BspTree t = Tree();
         var w = new RetailDataWriter();
         RetailEntries.Tree(w, t, 1);
-        Assert.Equal(w.ToArray(), RetailBspPack.Pack(t, RetailBspKind.Physics));
+        Assert.Equal(w.ToArray(), BspPack.Pack(t, BspKind.Physics));
     }
 
     [Fact]
@@ -74,11 +74,11 @@ public class RetailBspPackTests
             BspNode.MakeLeaf(0, default, 0, 0, false),
         };
         var t = new BspTree(nodes, [], []);
-        byte[] bytes = RetailBspPack.Pack(t, RetailBspKind.Cell);
+        byte[] bytes = BspPack.Pack(t, BspKind.Cell);
         // Two nodes of tag + plane (20 bytes each) and a leaf of tag + index (8): 48 bytes.
         Assert.Equal(48, bytes.Length);
         var r = new RetailDataReader(bytes, "BSPTREE");
-        BspTree back = RetailBsp.UnpackTree(ref r, RetailBspKind.Cell, [], 0)!;
+        BspTree back = BspReader.UnPackTree(ref r, BspKind.Cell, [], 0)!;
         Assert.True(back.PointInsideCellBsp(new Vector3(2f, 0f, 0f)));
         Assert.False(back.PointInsideCellBsp(new Vector3(5f, 0f, 0f)));
     }

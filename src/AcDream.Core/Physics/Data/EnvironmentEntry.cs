@@ -6,13 +6,13 @@ namespace AcDream.Core.Physics.Data;
 /// <summary>
 /// An environment (data-file entry 0x0Dxxxxxx): the list of cell structures indoor cells take their shape from, as retail's
 /// <c>CEnvironment::UnPack</c> reads it. An indoor cell names its environment and a structure index
-/// (<see cref="RetailEnvCell.EnvironmentId"/>, <see cref="RetailEnvCell.CellStructIndex"/>).
+/// (<see cref="EnvCellEntry.EnvironmentId"/>, <see cref="EnvCellEntry.CellStructIndex"/>).
 /// </summary>
-public sealed class RetailEnvironment
+public sealed class EnvironmentEntry
 {
-    private readonly RetailCellStruct[] _cells;
+    private readonly CellStructEntry[] _cells;
 
-    private RetailEnvironment(uint id, RetailCellStruct[] cells)
+    private EnvironmentEntry(uint id, CellStructEntry[] cells)
     {
         Id = id;
         _cells = cells;
@@ -22,29 +22,29 @@ public sealed class RetailEnvironment
     public uint Id { get; }
 
     /// <summary>The cell structures, in stored order. Retail: <c>cells</c>.</summary>
-    public ReadOnlySpan<RetailCellStruct> CellStructs => _cells;
+    public ReadOnlySpan<CellStructEntry> CellStructs => _cells;
 
     /// <summary>The structure at <paramref name="index"/>, or null when out of range (retail indexes without a check).
     /// Retail <c>CEnvironment::get_cellstruct</c>.</summary>
     // retail: CEnvironment::get_cellstruct (acclient.c:352896)
-    public RetailCellStruct? GetCellStruct(int index) => (uint)index < (uint)_cells.Length ? _cells[index] : null;
+    public CellStructEntry? GetCellStruct(int index) => (uint)index < (uint)_cells.Length ? _cells[index] : null;
 
     /// <summary>Unpacks one environment entry's bytes: the id, the structure count, each structure
     /// (<c>CCellStruct::UnPack</c>). Retail <c>CEnvironment::UnPack</c>.</summary>
     /// <exception cref="RetailDataFormatException">The bytes are not an environment.</exception>
     // retail: CEnvironment::UnPack (acclient.c:352987)
-    public static RetailEnvironment Unpack(ReadOnlySpan<byte> data)
+    public static EnvironmentEntry UnPack(ReadOnlySpan<byte> data)
     {
         var r = new RetailDataReader(data, "CEnvironment");
         uint id = r.ReadUInt32("id");
         // A structure is at least 16 (counts) + 8 (vertex array) + 4 + 4 (two one-leaf trees' tags) + ... > 32 bytes.
         int n = r.ReadCount("cell struct count", 32);
-        var cells = new RetailCellStruct[n];
+        var cells = new CellStructEntry[n];
         for (int i = 0; i < n; i++)
         {
-            cells[i] = RetailCellStruct.Unpack(ref r);
+            cells[i] = CellStructEntry.UnPack(ref r);
         }
 
-        return new RetailEnvironment(id, cells);
+        return new EnvironmentEntry(id, cells);
     }
 }

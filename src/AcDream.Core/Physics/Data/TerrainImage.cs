@@ -2,8 +2,9 @@ using System;
 using System.IO;
 using AcDream.Core.Physics.Spatial;
 using StbImageSharp;
+using AcDream.Core.Physics.Terrain;
 
-namespace AcDream.Core.Physics.Terrain;
+namespace AcDream.Core.Physics.Data;
 
 /// <summary>
 /// The whole Dereth heightfield as one image, one pixel per terrain vertex (the fixture <c>terrain.png</c>:
@@ -94,7 +95,7 @@ public sealed class TerrainImage
 
     /// <summary>The raw data of landblock column <paramref name="blockX"/>, row <paramref name="blockY"/> (0..254).</summary>
     /// <exception cref="ArgumentOutOfRangeException">A coordinate is outside 0..254.</exception>
-    public LandBlockData GetLandBlockData(int blockX, int blockY)
+    public LandBlockEntry GetLandBlockEntry(int blockX, int blockY)
     {
         uint id = LandBlock.MakeId(blockX, blockY);
         Span<byte> h = stackalloc byte[LandBlock.VertexCount];
@@ -112,6 +113,6 @@ public sealed class TerrainImage
             }
         }
 
-        return new LandBlockData(id, h, t);
+        return new LandBlockEntry(id, h, t);
     }
 }

@@ -18,7 +18,7 @@ namespace AcDream.Core.Tests.Retail.Data;
 /// count); cylinder spheres (low point, radius, height); spheres; height, radius, step up, step down; sorting and selection
 /// spheres; lights (type, frame, colour, intensity, falloff, cone angle); five default ids; 4-alignment.
 /// </summary>
-public class RetailSetupTests
+public class SetupEntryTests
 {
     private static readonly Quaternion Yaw90 = new(0f, 0f, MathF.Sqrt(0.5f), MathF.Sqrt(0.5f));
 
@@ -59,7 +59,7 @@ public class RetailSetupTests
     [Fact]
     public void Parts_ParentIndices_AndDefaultScales()
     {
-        RetailSetup s = RetailSetup.Unpack(TwoPartSetup());
+        SetupEntry s = SetupEntry.UnPack(TwoPartSetup());
         Assert.Equal(0x02000123u, s.Id);
         Assert.Equal(new uint[] { 0x01000010, 0x01000011 }, s.Parts.ToArray());
         Assert.Equal(new uint[] { 0xFFFFFFFF, 0 }, s.ParentIndices.ToArray());
@@ -72,7 +72,7 @@ public class RetailSetupTests
     public void WithoutFlags1And2_NoParentsNorScalesAreRead()
     {
         // flags 0: the reads go from the part ids straight to the holding locations; everything after still lines up.
-        RetailSetup s = RetailSetup.Unpack(TwoPartSetup(flags: 0));
+        SetupEntry s = SetupEntry.UnPack(TwoPartSetup(flags: 0));
         Assert.True(s.ParentIndices.IsEmpty);
         Assert.True(s.DefaultScales.IsEmpty);
         Assert.False(s.AllowFreeHeading);
@@ -82,8 +82,8 @@ public class RetailSetupTests
     [Fact]
     public void HoldingLocations_AndPlacementFrames()
     {
-        RetailSetup s = RetailSetup.Unpack(TwoPartSetup());
-        Assert.Equal(new RetailLocation(2, 1, new Frame(new Vector3(0.1f, 0.2f, 0.3f), Quaternion.Identity)).Key, s.HoldingLocations[0].Key);
+        SetupEntry s = SetupEntry.UnPack(TwoPartSetup());
+        Assert.Equal(new LocationInfo(2, 1, new Frame(new Vector3(0.1f, 0.2f, 0.3f), Quaternion.Identity)).Key, s.HoldingLocations[0].Key);
         Assert.Equal(1u, s.HoldingLocations[0].PartId);
         Assert.Equal(new Vector3(0.1f, 0.2f, 0.3f), s.HoldingLocations[0].Frame.Origin);
         Assert.True(s.ConnectionPoints.IsEmpty);
@@ -97,7 +97,7 @@ public class RetailSetupTests
     [Fact]
     public void GetHoldingLocation_FindsByKey_OrNull()
     {
-        RetailSetup s = RetailSetup.Unpack(TwoPartSetup());
+        SetupEntry s = SetupEntry.UnPack(TwoPartSetup());
         Assert.Equal(1u, s.GetHoldingLocation(2)!.Value.PartId);
         Assert.Null(s.GetHoldingLocation(3));
     }
@@ -105,7 +105,7 @@ public class RetailSetupTests
     [Fact]
     public void CylinderSpheres_Spheres_AndSizes()
     {
-        RetailSetup s = RetailSetup.Unpack(TwoPartSetup());
+        SetupEntry s = SetupEntry.UnPack(TwoPartSetup());
         // CCylSphere::UnPack: low point, then radius, then height.
         Assert.Equal(new CylSphere(Vector3.Zero, 0.75f, 2f), s.CylSpheres[0]);
         Assert.Equal(new Sphere(new Vector3(0f, 0f, 1.2f), 0.48f).Center, s.Spheres[1].Center);
@@ -119,7 +119,7 @@ public class RetailSetupTests
     [Fact]
     public void SortingAndSelectionSpheres_Lights_AndDefaultIds()
     {
-        RetailSetup s = RetailSetup.Unpack(TwoPartSetup());
+        SetupEntry s = SetupEntry.UnPack(TwoPartSetup());
         Assert.Equal(new Vector3(0f, 0f, 0.9f), s.SortingSphere.Center);
         Assert.Equal(1f, s.SortingSphere.Radius);
         Assert.Equal(1.1f, s.SelectionSphere.Radius);
@@ -136,7 +136,7 @@ public class RetailSetupTests
     [Fact]
     public void ToSetupPhysics_FeedsTheSimplePartArray_AsIs()
     {
-        RetailSetup s = RetailSetup.Unpack(TwoPartSetup());
+        SetupEntry s = SetupEntry.UnPack(TwoPartSetup());
         SetupPhysics p = s.ToSetupPhysics();
         Assert.Equal(2, p.Spheres.Length);
         Assert.Equal(0.6f, p.StepUpHeight);
@@ -152,10 +152,10 @@ public class RetailSetupTests
         byte[] bytes = TwoPartSetup();
         // The second sphere's radius: after the cylinder sphere count at the shapes' start (+4 + 20), the sphere count (+4),
         // the first sphere (16) and the second centre (12).
-        RetailSetup probe = RetailSetup.Unpack(bytes);
+        SetupEntry probe = SetupEntry.UnPack(bytes);
         int shapes = FindShapes(bytes);
         BitConverter.TryWriteBytes(bytes.AsSpan(shapes + 4 + 20 + 4 + 16 + 12), 0f);
-        RetailSetup s = RetailSetup.Unpack(bytes);      // retail reads it
+        SetupEntry s = SetupEntry.UnPack(bytes);      // retail reads it
         Assert.Equal(0f, s.Spheres[1].Radius);
         var e = Assert.Throws<RetailDataFormatException>(() => s.ToSetupPhysics());
         Assert.Equal("CSetup", e.Structure);
@@ -168,7 +168,7 @@ public class RetailSetupTests
     {
         // Retail's AnimFrame::UnPack (acclient.c:333869) reads each placement's hooks with CAnimHook::UnPackHook (342736):
         // type 6 (Ethereal), direction 1 (Forward), then its int. The part frames are the same as without the hook.
-        RetailSetup s = RetailSetup.Unpack(TwoPartSetup(hooks: 1));
+        SetupEntry s = SetupEntry.UnPack(TwoPartSetup(hooks: 1));
         AnimFrame resting = s.PlacementAnimFrames[0x65];
         Assert.Equal(1, resting.NumFrameHooks);
         var hook = Assert.IsType<EtherealHook>(resting.Hooks);
@@ -186,7 +186,7 @@ public class RetailSetupTests
         // id 4 + flags 4 + count 4 + parts 8 + parents 8 + scales 24 + holding 4 + 36 + connections 4 + placements 4 + key 4
         // + two frames 56 = 160: the hook count; the hook's type word at 164.
         BitConverter.TryWriteBytes(bytes.AsSpan(164), 99u);
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailSetup.Unpack(bytes));
+        var e = Assert.Throws<RetailDataFormatException>(() => SetupEntry.UnPack(bytes));
         Assert.Equal(164, e.Offset);
     }
 
@@ -195,7 +195,7 @@ public class RetailSetupTests
     {
         var w = new RetailDataWriter();
         w.UInt32(0x02000001).UInt32(0).UInt32(0x40000000);
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailSetup.Unpack(w.ToArray()));
+        var e = Assert.Throws<RetailDataFormatException>(() => SetupEntry.UnPack(w.ToArray()));
         Assert.Equal(12, e.Offset); // the check runs after the count is read: 0 bytes remain for 2^30 parts
         Assert.Contains("part count", e.Reason);
     }

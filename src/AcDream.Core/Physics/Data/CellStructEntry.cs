@@ -12,13 +12,13 @@ namespace AcDream.Core.Physics.Data;
 /// the vertex positions, the portal polygons, the cell BSP, the physics polygons and the physics BSP, all as stored and in
 /// cell-local space. The drawing polygons other than the portals and the drawing BSP are read and dropped.
 /// </summary>
-public sealed class RetailCellStruct
+public sealed class CellStructEntry
 {
     private readonly Vector3[] _vertices;
     private readonly Polygon[] _portals;
     private readonly Polygon[] _physicsPolygons;
 
-    private RetailCellStruct(uint id, Vector3[] vertices, int polygonCount, Polygon[] portals, BspTree cellBsp, Polygon[] physicsPolygons,
+    private CellStructEntry(uint id, Vector3[] vertices, int polygonCount, Polygon[] portals, BspTree cellBsp, Polygon[] physicsPolygons,
         BspTree physicsBsp, bool hasDrawingBsp)
     {
         CellStructId = id;
@@ -65,7 +65,7 @@ public sealed class RetailCellStruct
     /// polygons, the physics BSP, a flag and the drawing BSP when it is set, 4-alignment.
     /// </summary>
     // retail: CCellStruct::UnPack (acclient.c:355822)
-    internal static RetailCellStruct Unpack(ref RetailDataReader r)
+    internal static CellStructEntry UnPack(ref RetailDataReader r)
     {
         r.Structure = "CCellStruct";
         uint id = r.ReadUInt32("cell struct id");
@@ -73,10 +73,10 @@ public sealed class RetailCellStruct
         uint numPhysics = r.ReadUInt32("physics polygon count");
         int numPortals = r.ReadCount("portal count", 2);
         r.Structure = "CVertexArray";
-        Vector3[] vertices = RetailVertexArray.Unpack(ref r);
+        Vector3[] vertices = VertexArrayReader.UnPack(ref r);
         r.Structure = "CPolygon";
         int nPolys = r.CheckCount(numPolygons, "polygon count", 12);
-        RetailPolygon[] polygons = RetailPolygon.UnpackList(ref r, nPolys, vertices.Length);
+        PolygonInfo[] polygons = PolygonInfo.UnPackList(ref r, nPolys, vertices.Length);
         r.Structure = "CCellStruct";
         r.CheckCount((uint)numPortals, "portal count", 2);
         var portals = new Polygon[numPortals];
@@ -94,22 +94,22 @@ public sealed class RetailCellStruct
 
         r.Align4();
         r.Structure = "BSPTREE";
-        BspTree cellBsp = RetailBsp.UnpackTree(ref r, RetailBspKind.Cell, [], polygons.Length)!;
+        BspTree cellBsp = BspReader.UnPackTree(ref r, BspKind.Cell, [], polygons.Length)!;
         r.Structure = "CPolygon";
         int nPhysics = r.CheckCount(numPhysics, "physics polygon count", 12);
-        Polygon[] physics = RetailPolygon.ToPolygons(RetailPolygon.UnpackList(ref r, nPhysics, vertices.Length), vertices, "CCellStruct");
+        Polygon[] physics = PolygonInfo.ToPolygons(PolygonInfo.UnPackList(ref r, nPhysics, vertices.Length), vertices, "CCellStruct");
         r.Structure = "BSPTREE";
-        BspTree physicsBsp = RetailBsp.UnpackTree(ref r, RetailBspKind.Physics, physics, physics.Length)!;
+        BspTree physicsBsp = BspReader.UnPackTree(ref r, BspKind.Physics, physics, physics.Length)!;
         r.Structure = "CCellStruct";
         bool hasDrawing = r.ReadUInt32("drawing BSP flag") != 0;
         if (hasDrawing)
         {
             r.Structure = "BSPTREE";
-            RetailBsp.UnpackTree(ref r, RetailBspKind.Drawing, [], polygons.Length);
+            BspReader.UnPackTree(ref r, BspKind.Drawing, [], polygons.Length);
             r.Structure = "CCellStruct";
         }
 
         r.Align4();
-        return new RetailCellStruct(id, vertices, polygons.Length, portals, cellBsp, physics, physicsBsp, hasDrawing);
+        return new CellStructEntry(id, vertices, polygons.Length, portals, cellBsp, physics, physicsBsp, hasDrawing);
     }
 }

@@ -15,17 +15,17 @@ namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>
 /// A client loads a landblock with a building and its two indoor cells from retail entries (<see cref="RoomSceneEntries"/>,
-/// the <see cref="RoomScene"/> as bytes) through <see cref="RetailLandBlockLoader"/>, and a walker walks in through the door,
+/// the <see cref="RoomScene"/> as bytes) through <see cref="LandBlockLoader"/>, and a walker walks in through the door,
 /// on into the corridor and back out — the walks of <see cref="IndoorTests"/>, through the unpacked cells and shell.
 /// </summary>
-public class RetailLandBlockLoaderTests
+public class LandBlockLoaderTests
 {
     private const float R = 0.5f;
 
-    private static (WorldCells Cells, RetailLandBlockContent Content) Load()
+    private static (WorldCells Cells, LandBlockContent Content) Load()
     {
         var cells = new WorldCells(SweepScene.Terrain());
-        RetailLandBlockContent c = RetailLandBlockLoader.Load(cells, 0x80800100, RoomSceneEntries.Source());
+        LandBlockContent c = LandBlockLoader.Load(cells, 0x80800100, RoomSceneEntries.Source());
         return (cells, c);
     }
 
@@ -35,7 +35,7 @@ public class RetailLandBlockLoaderTests
     [Fact]
     public void TheLandBlock_ItsCells_AndItsBuilding_AreInTheWorld()
     {
-        (WorldCells cells, RetailLandBlockContent c) = Load();
+        (WorldCells cells, LandBlockContent c) = Load();
         Assert.Equal(1, cells.Terrain.LandBlockCount);
         Assert.Equal(2, cells.EnvCellCount);
         Assert.Equal(BspScene.Ground, c.LandBlock.Vertices[40].Z);
@@ -88,7 +88,7 @@ public class RetailLandBlockLoaderTests
         var cells = new WorldCells(SweepScene.Terrain());
         DictionarySource s = RoomSceneEntries.Source();
         s.Entries[RoomScene.Corridor] = s.Entries[RoomScene.Corridor].AsSpan(0, 30).ToArray();
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailLandBlockLoader.Load(cells, 0x8080FFFF, s));
+        var e = Assert.Throws<RetailDataFormatException>(() => LandBlockLoader.Load(cells, 0x8080FFFF, s));
         Assert.Equal("CEnvCell", e.Structure);
         Assert.Equal(0, cells.Terrain.LandBlockCount);
         Assert.Equal(0, cells.EnvCellCount);
@@ -100,7 +100,7 @@ public class RetailLandBlockLoaderTests
         var cells = new WorldCells(SweepScene.Terrain());
         DictionarySource s = RoomSceneEntries.Source();
         s.Entries.Remove(RoomSceneEntries.Env);
-        var e = Assert.Throws<ArgumentException>(() => RetailLandBlockLoader.Load(cells, 0x8080FFFF, s));
+        var e = Assert.Throws<ArgumentException>(() => LandBlockLoader.Load(cells, 0x8080FFFF, s));
         Assert.Contains("0x0D000001", e.Message);
         Assert.Equal(0, cells.Terrain.LandBlockCount);
     }
@@ -112,7 +112,7 @@ public class RetailLandBlockLoaderTests
         var cells = new WorldCells(SweepScene.Terrain());
         DictionarySource s = RoomSceneEntries.Source();
         s.Entries[RoomScene.Room] = s.Entries[RoomScene.Corridor];
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailLandBlockLoader.Load(cells, 0x8080FFFF, s));
+        var e = Assert.Throws<RetailDataFormatException>(() => LandBlockLoader.Load(cells, 0x8080FFFF, s));
         Assert.Equal("CEnvCell", e.Structure);
         Assert.Equal(8, e.Offset);
         Assert.Equal(0, cells.EnvCellCount);
@@ -122,7 +122,7 @@ public class RetailLandBlockLoaderTests
     public void TheEnvironmentIsReadOnce_ForBothCells()
     {
         DictionarySource s = RoomSceneEntries.Source();
-        RetailLandBlockLoader.Load(new WorldCells(SweepScene.Terrain()), 0x8080FFFF, s);
+        LandBlockLoader.Load(new WorldCells(SweepScene.Terrain()), 0x8080FFFF, s);
         // Block, info, two cells, one environment, one shell.
         Assert.Equal(6, s.Reads);
     }

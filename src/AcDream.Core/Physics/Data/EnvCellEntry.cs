@@ -14,7 +14,7 @@ namespace AcDream.Core.Physics.Data;
 /// <param name="OtherCellId">The full id of the cell behind (the block's prefix and the stored low word), or
 /// <see cref="CellPortal.OutsideCellId"/> for flag 4.</param>
 /// <param name="OtherPortalId">The matching portal's index in the other cell.</param>
-public readonly record struct RetailCellPortal(ushort Flags, short PolyId, uint OtherCellId, short OtherPortalId)
+public readonly record struct CellPortalInfo(ushort Flags, short PolyId, uint OtherCellId, short OtherPortalId)
 {
     /// <summary>Retail <c>exact_match</c>: flag 1.</summary>
     public bool ExactMatch => (Flags & 1) != 0;
@@ -26,14 +26,14 @@ public readonly record struct RetailCellPortal(ushort Flags, short PolyId, uint 
 /// <summary>A static object of a cell or a landblock: its Setup or GfxObj id and its frame (landblock-local).</summary>
 /// <param name="Id">The object's Setup (0x02xxxxxx) or GfxObj (0x01xxxxxx) id.</param>
 /// <param name="Frame">Where it stands in its landblock.</param>
-public readonly record struct RetailStaticObject(uint Id, Frame Frame);
+public readonly record struct StaticObjectInfo(uint Id, Frame Frame);
 
 /// <summary>
 /// An indoor cell (data-file entry 0xXXYY0100 and up) as retail's <c>CEnvCell::UnPack</c> reads it: its environment and
 /// structure, its frame in the landblock, its portals, the cells it sees, its static objects. Build the library's cell with
 /// <see cref="ToEnvCell"/> from the environment it names.
 /// </summary>
-public sealed class RetailEnvCell
+public sealed class EnvCellEntry
 {
     /// <summary>Retail flag 1: the cell sees the outdoors (<c>seen_outside</c>).</summary>
     public const uint SeenOutsideFlag = 1;
@@ -45,14 +45,14 @@ public sealed class RetailEnvCell
     public const uint HasRestrictionObjectFlag = 8;
 
     private readonly uint[] _surfaceIds;
-    private readonly RetailCellPortal[] _portals;
+    private readonly CellPortalInfo[] _portals;
     private readonly uint[] _visibleCells;
-    private readonly RetailStaticObject[] _staticObjects;
+    private readonly StaticObjectInfo[] _staticObjects;
     private readonly int _environmentOffset;
     private readonly int[] _portalOffsets;
 
-    private RetailEnvCell(uint id, uint flags, uint[] surfaceIds, uint environmentId, int cellStructIndex, Frame frame,
-        RetailCellPortal[] portals, uint[] visibleCells, RetailStaticObject[] staticObjects, uint restrictionObject,
+    private EnvCellEntry(uint id, uint flags, uint[] surfaceIds, uint environmentId, int cellStructIndex, Frame frame,
+        CellPortalInfo[] portals, uint[] visibleCells, StaticObjectInfo[] staticObjects, uint restrictionObject,
         int environmentOffset, int[] portalOffsets)
     {
         _environmentOffset = environmentOffset;
@@ -89,13 +89,13 @@ public sealed class RetailEnvCell
     public Frame Frame { get; }
 
     /// <summary>The portals, in stored order (portal indices elsewhere refer to this order).</summary>
-    public ReadOnlySpan<RetailCellPortal> Portals => _portals;
+    public ReadOnlySpan<CellPortalInfo> Portals => _portals;
 
     /// <summary>The cells this one sees, full ids. Retail: <c>stab_list</c>.</summary>
     public ReadOnlySpan<uint> VisibleCells => _visibleCells;
 
     /// <summary>The static objects (ids and frames). Retail: <c>static_object_ids</c>, <c>static_object_frames</c>.</summary>
-    public ReadOnlySpan<RetailStaticObject> StaticObjects => _staticObjects;
+    public ReadOnlySpan<StaticObjectInfo> StaticObjects => _staticObjects;
 
     /// <summary>The restriction object id, 0 when not stored. Retail: <c>restriction_obj</c>.</summary>
     public uint RestrictionObject { get; }
@@ -107,7 +107,7 @@ public sealed class RetailEnvCell
     /// </summary>
     /// <exception cref="RetailDataFormatException">The bytes are not an indoor cell (also: its id is not an indoor cell id).</exception>
     // retail: CEnvCell::UnPack (acclient.c:349133)
-    public static RetailEnvCell Unpack(ReadOnlySpan<byte> data)
+    public static EnvCellEntry UnPack(ReadOnlySpan<byte> data)
     {
         var r = new RetailDataReader(data, "CEnvCell");
         r.ReadUInt32("entry id");
@@ -135,12 +135,12 @@ public sealed class RetailEnvCell
         int structIndex = r.ReadUInt16("cell struct index");
         Frame frame = r.ReadFrame("cell frame");
         r.CheckCount(numPortals, "portal count", 8);
-        var portals = new RetailCellPortal[numPortals];
+        var portals = new CellPortalInfo[numPortals];
         var portalAt = new int[numPortals];
         for (int i = 0; i < portals.Length; i++)
         {
             portalAt[i] = r.Offset;
-            portals[i] = UnpackPortal(ref r, blockMask);
+            portals[i] = UnPackPortal(ref r, blockMask);
         }
 
         r.CheckCount(numStabs, "visible cell count", 2);
@@ -150,34 +150,34 @@ public sealed class RetailEnvCell
             visible[i] = blockMask | r.ReadUInt16("visible cell id");
         }
 
-        RetailStaticObject[] statics = [];
+        StaticObjectInfo[] statics = [];
         if ((flags & HasStaticObjectsFlag) != 0)
         {
             int n = r.ReadCount("static object count", 32);
-            statics = new RetailStaticObject[n];
+            statics = new StaticObjectInfo[n];
             for (int i = 0; i < n; i++)
             {
                 uint objId = r.ReadUInt32("static object id");
-                statics[i] = new RetailStaticObject(objId, r.ReadFrame("static object frame"));
+                statics[i] = new StaticObjectInfo(objId, r.ReadFrame("static object frame"));
             }
         }
 
         uint restriction = (flags & HasRestrictionObjectFlag) != 0 ? r.ReadUInt32("restriction object") : 0u;
-        return new RetailEnvCell(id, flags, surfaces, environmentId, structIndex, frame, portals, visible, statics, restriction, envAt,
+        return new EnvCellEntry(id, flags, surfaces, environmentId, structIndex, frame, portals, visible, statics, restriction, envAt,
             portalAt);
     }
 
     /// <summary>One portal: flags, polygon id, the other cell's low word (ignored with flag 4: the outdoors), the other
     /// portal's index.</summary>
     // retail: CCellPortal::UnPack (acclient.c:362378)
-    private static RetailCellPortal UnpackPortal(ref RetailDataReader r, uint blockMask)
+    private static CellPortalInfo UnPackPortal(ref RetailDataReader r, uint blockMask)
     {
         ushort flags = r.ReadUInt16("portal flags");
         short polyId = r.ReadInt16("portal polygon id");
         ushort other = r.ReadUInt16("portal other cell");
         short otherPortal = r.ReadInt16("portal other portal id");
         uint otherCell = (flags & 4) != 0 ? CellPortal.OutsideCellId : blockMask | other;
-        return new RetailCellPortal(flags, polyId, otherCell, otherPortal);
+        return new CellPortalInfo(flags, polyId, otherCell, otherPortal);
     }
 
     /// <summary>
@@ -188,7 +188,7 @@ public sealed class RetailEnvCell
     /// <exception cref="ArgumentNullException"><paramref name="environment"/> is null.</exception>
     /// <exception cref="RetailDataFormatException">The environment is not the one the cell names, the structure index is out of
     /// range, or a portal's polygon is not among the structure's portals (the offset is that field's in the cell's bytes).</exception>
-    public EnvCell ToEnvCell(RetailEnvironment environment)
+    public EnvCell ToEnvCell(EnvironmentEntry environment)
     {
         ArgumentNullException.ThrowIfNull(environment);
         if (environment.Id != EnvironmentId)
@@ -196,12 +196,12 @@ public sealed class RetailEnvCell
             throw new RetailDataFormatException("CEnvCell", _environmentOffset, $"cell 0x{Id:X8} names environment 0x{EnvironmentId:X8}, not 0x{environment.Id:X8}");
         }
 
-        RetailCellStruct s = environment.GetCellStruct(CellStructIndex)
+        CellStructEntry s = environment.GetCellStruct(CellStructIndex)
             ?? throw new RetailDataFormatException("CEnvCell", _environmentOffset + 2, $"cell 0x{Id:X8}: structure index {CellStructIndex} is outside environment 0x{EnvironmentId:X8} ({environment.CellStructs.Length} structures)");
         var portals = new CellPortal[_portals.Length];
         for (int i = 0; i < portals.Length; i++)
         {
-            RetailCellPortal p = _portals[i];
+            CellPortalInfo p = _portals[i];
             Polygon poly = s.Structure.GetPortal(p.PolyId)
                 ?? throw new RetailDataFormatException("CEnvCell", _portalOffsets[i] + 2, $"cell 0x{Id:X8}: portal {i} names polygon {p.PolyId}, not a portal of its structure");
             portals[i] = new CellPortal(p.OtherCellId, poly, p.PortalSide, p.OtherPortalId, p.ExactMatch);

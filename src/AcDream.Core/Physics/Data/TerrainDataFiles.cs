@@ -2,8 +2,9 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
+using AcDream.Core.Physics.Terrain;
 
-namespace AcDream.Core.Physics.Terrain;
+namespace AcDream.Core.Physics.Data;
 
 /// <summary>
 /// Readers for the plain-text terrain fixtures: the land height table CSV (<c>index,height_m</c>) and the landblock
@@ -55,7 +56,7 @@ public static class TerrainDataFiles
     /// </summary>
     /// <exception cref="InvalidDataException">A malformed row, <c>ac_index != vx * 9 + vy</c>, or a landblock without
     /// exactly its 81 vertices.</exception>
-    public static IReadOnlyList<LandBlockData> ReadLandblockSampleCsv(string path)
+    public static IReadOnlyList<LandBlockEntry> ReadLandblockSampleCsv(string path)
     {
         var order = new List<uint>();
         var heights = new Dictionary<uint, byte[]>();
@@ -102,7 +103,7 @@ public static class TerrainDataFiles
             counts[id]++;
         }
 
-        var result = new List<LandBlockData>(order.Count);
+        var result = new List<LandBlockEntry>(order.Count);
         foreach (uint id in order)
         {
             if (counts[id] != LandBlock.VertexCount)
@@ -110,7 +111,7 @@ public static class TerrainDataFiles
                 throw new InvalidDataException($"{path}: landblock 0x{id:X8} has {counts[id]} rows, not {LandBlock.VertexCount}.");
             }
 
-            result.Add(new LandBlockData(id, heights[id], terrains[id]));
+            result.Add(new LandBlockEntry(id, heights[id], terrains[id]));
         }
 
         return result;

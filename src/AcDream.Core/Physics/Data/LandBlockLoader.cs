@@ -9,11 +9,11 @@ using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 
-/// <summary>What <see cref="RetailLandBlockLoader.Load"/> put into the world, and what it read but did not place.</summary>
-public sealed class RetailLandBlockContent
+/// <summary>What <see cref="LandBlockLoader.Load"/> put into the world, and what it read but did not place.</summary>
+public sealed class LandBlockContent
 {
-    internal RetailLandBlockContent(LandBlock landBlock, RetailLandBlockInfo? info, EnvCell[] envCells, BuildingObj[] buildings,
-        RetailBuilding[] buildingsWithoutShell, RetailStaticObject[] staticObjects)
+    internal LandBlockContent(LandBlock landBlock, LandBlockInfoEntry? info, EnvCell[] envCells, BuildingObj[] buildings,
+        BuildingInfo[] buildingsWithoutShell, StaticObjectInfo[] staticObjects)
     {
         LandBlock = landBlock;
         Info = info;
@@ -27,7 +27,7 @@ public sealed class RetailLandBlockContent
     public LandBlock LandBlock { get; }
 
     /// <summary>The block's info entry, or null when the block has none.</summary>
-    public RetailLandBlockInfo? Info { get; }
+    public LandBlockInfoEntry? Info { get; }
 
     /// <summary>The indoor cells now in the world, in id order.</summary>
     public IReadOnlyList<EnvCell> EnvCells { get; }
@@ -37,11 +37,11 @@ public sealed class RetailLandBlockContent
 
     /// <summary>Buildings whose model is not a GfxObj with physics (a Setup model, or a GfxObj without a physics BSP): read,
     /// not placed.</summary>
-    public IReadOnlyList<RetailBuilding> BuildingsWithoutShell { get; }
+    public IReadOnlyList<BuildingInfo> BuildingsWithoutShell { get; }
 
     /// <summary>The static objects of the block and of its cells (ids and landblock-local frames), read, not placed: the client
     /// creates them as objects from their Setups.</summary>
-    public IReadOnlyList<RetailStaticObject> StaticObjects { get; }
+    public IReadOnlyList<StaticObjectInfo> StaticObjects { get; }
 }
 
 /// <summary>
@@ -51,7 +51,7 @@ public sealed class RetailLandBlockContent
 /// </summary>
 /// <remarks>Retail loads the same entries through <c>CLandBlock::InitLoad</c> / <c>init_buildings</c> and
 /// <c>CEnvCell::UnPack</c>; the order of the reads here is the client's contract, described in <c>docs/retail-data.md</c>.</remarks>
-public static class RetailLandBlockLoader
+public static class LandBlockLoader
 {
     /// <summary>
     /// Reads landblock <paramref name="blockId"/> from <paramref name="source"/> and adds it to <paramref name="cells"/>
@@ -66,7 +66,7 @@ public static class RetailLandBlockLoader
     /// <exception cref="RetailDataFormatException">An entry's bytes are bad (also: an entry holds another id than the one asked
     /// for); nothing has been added.</exception>
     /// <exception cref="InvalidOperationException">Called from inside a tick of the world these cells serve; nothing has been added.</exception>
-    public static RetailLandBlockContent Load(WorldCells cells, uint blockId, IRetailDataSource source)
+    public static LandBlockContent Load(WorldCells cells, uint blockId, IRetailDataSource source)
     {
         ArgumentNullException.ThrowIfNull(cells);
         ArgumentNullException.ThrowIfNull(source);
@@ -76,27 +76,27 @@ public static class RetailLandBlockLoader
             throw new ArgumentException($"Landblock 0x{block:X8} lies outside the world.", nameof(blockId));
         }
 
-        RetailLandBlock land = RetailLandBlock.Unpack(Entry(source, block));
+        LandBlockEntry land = LandBlockEntry.UnPack(Entry(source, block));
         Expect("CLandBlock", land.Id, block);
         LandBlock landBlock = land.ToLandBlock(cells.Terrain.HeightTable);
-        RetailLandBlockInfo? info = null;
+        LandBlockInfoEntry? info = null;
         var envCells = new List<EnvCell>();
         var buildings = new List<(BuildingObj Building, uint LandCell)>();
-        var noShell = new List<RetailBuilding>();
-        var statics = new List<RetailStaticObject>();
+        var noShell = new List<BuildingInfo>();
+        var statics = new List<StaticObjectInfo>();
         if (land.HasInfo)
         {
-            info = RetailLandBlockInfo.Unpack(Entry(source, (block & 0xFFFF0000u) | 0xFFFEu));
+            info = LandBlockInfoEntry.UnPack(Entry(source, (block & 0xFFFF0000u) | 0xFFFEu));
             Expect("CLandBlockInfo", info.Id, (block & 0xFFFF0000u) | 0xFFFEu);
             statics.AddRange(info.Objects.ToArray());
-            var environments = new Dictionary<uint, RetailEnvironment>();
+            var environments = new Dictionary<uint, EnvironmentEntry>();
             for (int i = 0; i < info.NumCells; i++)
             {
-                RetailEnvCell cell = RetailEnvCell.Unpack(Entry(source, info.CellId(i)));
+                EnvCellEntry cell = EnvCellEntry.UnPack(Entry(source, info.CellId(i)));
                 Expect("CEnvCell", cell.Id, info.CellId(i), 8);
-                if (!environments.TryGetValue(cell.EnvironmentId, out RetailEnvironment? env))
+                if (!environments.TryGetValue(cell.EnvironmentId, out EnvironmentEntry? env))
                 {
-                    env = RetailEnvironment.Unpack(Entry(source, cell.EnvironmentId));
+                    env = EnvironmentEntry.UnPack(Entry(source, cell.EnvironmentId));
                     Expect("CEnvironment", env.Id, cell.EnvironmentId);
                     environments.Add(cell.EnvironmentId, env);
                 }
@@ -105,8 +105,8 @@ public static class RetailLandBlockLoader
                 statics.AddRange(cell.StaticObjects.ToArray());
             }
 
-            var shells = new Dictionary<uint, RetailGfxObj>();
-            foreach (RetailBuilding b in info.Buildings)
+            var shells = new Dictionary<uint, GfxObjEntry>();
+            foreach (BuildingInfo b in info.Buildings)
             {
                 if ((b.ModelId >> 24) != 0x01)
                 {
@@ -114,9 +114,9 @@ public static class RetailLandBlockLoader
                     continue;
                 }
 
-                if (!shells.TryGetValue(b.ModelId, out RetailGfxObj? gfx))
+                if (!shells.TryGetValue(b.ModelId, out GfxObjEntry? gfx))
                 {
-                    gfx = RetailGfxObj.Unpack(Entry(source, b.ModelId));
+                    gfx = GfxObjEntry.UnPack(Entry(source, b.ModelId));
                     Expect("CGfxObj", gfx.Id, b.ModelId);
                     shells.Add(b.ModelId, gfx);
                 }
@@ -156,7 +156,7 @@ public static class RetailLandBlockLoader
             placed[i] = buildings[i].Building;
         }
 
-        return new RetailLandBlockContent(landBlock, info, envCells.ToArray(), placed, noShell.ToArray(), statics.ToArray());
+        return new LandBlockContent(landBlock, info, envCells.ToArray(), placed, noShell.ToArray(), statics.ToArray());
     }
 
     // An entry whose own id is not the id it was asked for is not that entry.

@@ -12,7 +12,7 @@ namespace AcDream.Core.Physics.Data;
 /// <param name="OtherCellId">The full id of the indoor cell behind the door.</param>
 /// <param name="OtherPortalId">The portal's index in that cell.</param>
 /// <param name="VisibleCells">The cells seen through the door (full ids). Retail: <c>stab_list</c>.</param>
-public sealed record RetailBldPortal(ushort Flags, uint OtherCellId, short OtherPortalId, uint[] VisibleCells)
+public sealed record BldPortalInfo(ushort Flags, uint OtherCellId, short OtherPortalId, uint[] VisibleCells)
 {
     /// <summary>Retail <c>exact_match</c>: flag 1.</summary>
     public bool ExactMatch => (Flags & 1) != 0;
@@ -30,18 +30,18 @@ public sealed record RetailBldPortal(ushort Flags, uint OtherCellId, short Other
 /// <param name="Frame">Where it stands, landblock-local. Retail: <c>building_frame</c>.</param>
 /// <param name="NumLeaves">Retail <c>num_leaves</c>.</param>
 /// <param name="Portals">The doors. Retail: <c>portals</c>.</param>
-public sealed record RetailBuilding(uint ModelId, Frame Frame, uint NumLeaves, RetailBldPortal[] Portals);
+public sealed record BuildingInfo(uint ModelId, Frame Frame, uint NumLeaves, BldPortalInfo[] Portals);
 
 /// <summary>
 /// A landblock's contents (data-file entry 0xXXYYFFFE) as retail's <c>CLandBlockInfo::UnPack</c> reads it: the number of
 /// indoor cells (0xXXYY0100 onwards), the static objects, the buildings and the restriction table.
 /// </summary>
-public sealed class RetailLandBlockInfo
+public sealed class LandBlockInfoEntry
 {
-    private readonly RetailStaticObject[] _objects;
-    private readonly RetailBuilding[] _buildings;
+    private readonly StaticObjectInfo[] _objects;
+    private readonly BuildingInfo[] _buildings;
 
-    private RetailLandBlockInfo(uint id, int numCells, RetailStaticObject[] objects, RetailBuilding[] buildings, ushort buildingFlags,
+    private LandBlockInfoEntry(uint id, int numCells, StaticObjectInfo[] objects, BuildingInfo[] buildings, ushort buildingFlags,
         IReadOnlyDictionary<uint, uint> restrictions)
     {
         Id = id;
@@ -59,10 +59,10 @@ public sealed class RetailLandBlockInfo
     public int NumCells { get; }
 
     /// <summary>The static objects. Retail: <c>object_ids</c>, <c>object_frames</c>.</summary>
-    public ReadOnlySpan<RetailStaticObject> Objects => _objects;
+    public ReadOnlySpan<StaticObjectInfo> Objects => _objects;
 
     /// <summary>The buildings. Retail: <c>buildings</c>.</summary>
-    public ReadOnlySpan<RetailBuilding> Buildings => _buildings;
+    public ReadOnlySpan<BuildingInfo> Buildings => _buildings;
 
     /// <summary>The high word of the building count (bit 1: a restriction table follows).</summary>
     public ushort BuildingFlags { get; }
@@ -86,7 +86,7 @@ public sealed class RetailLandBlockInfo
     /// <exception cref="RetailDataFormatException">The bytes are not a landblock info (also: the id is not 0xXXYYFFFE, or the
     /// cell count runs past cell 0xFFFD).</exception>
     // retail: CLandBlockInfo::UnPack (acclient.c:351048)
-    public static RetailLandBlockInfo Unpack(ReadOnlySpan<byte> data)
+    public static LandBlockInfoEntry UnPack(ReadOnlySpan<byte> data)
     {
         var r = new RetailDataReader(data, "CLandBlockInfo");
         uint id = r.ReadUInt32("id");
@@ -103,41 +103,41 @@ public sealed class RetailLandBlockInfo
         }
 
         int numObjects = r.ReadCount("object count", 32);
-        var objects = new RetailStaticObject[numObjects];
+        var objects = new StaticObjectInfo[numObjects];
         for (int i = 0; i < numObjects; i++)
         {
             uint objId = r.ReadUInt32("object id");
-            objects[i] = new RetailStaticObject(objId, r.ReadFrame("object frame"));
+            objects[i] = new StaticObjectInfo(objId, r.ReadFrame("object frame"));
         }
 
         uint blockMask = id & 0xFFFF0000u;
         uint packed = r.ReadUInt32("building count");
         int numBuildings = r.CheckCount(packed & 0xFFFF, "building count", 40);
         ushort packMask = (ushort)(packed >> 16);
-        var buildings = new RetailBuilding[numBuildings];
+        var buildings = new BuildingInfo[numBuildings];
         for (int i = 0; i < numBuildings; i++)
         {
             uint model = r.ReadUInt32("building id");
             Frame frame = r.ReadFrame("building frame");
             uint numLeaves = r.ReadUInt32("building leaf count");
             int numPortals = r.ReadCount("building portal count", 8);
-            var portals = new RetailBldPortal[numPortals];
+            var portals = new BldPortalInfo[numPortals];
             for (int p = 0; p < numPortals; p++)
             {
-                portals[p] = UnpackBldPortal(ref r, blockMask);
+                portals[p] = UnPackBldPortal(ref r, blockMask);
             }
 
-            buildings[i] = new RetailBuilding(model, frame, numLeaves, portals);
+            buildings[i] = new BuildingInfo(model, frame, numLeaves, portals);
         }
 
-        IReadOnlyDictionary<uint, uint> restrictions = (packMask & 1) != 0 ? UnpackTable(ref r) : new Dictionary<uint, uint>();
-        return new RetailLandBlockInfo(id, (int)numCells, objects, buildings, packMask, restrictions);
+        IReadOnlyDictionary<uint, uint> restrictions = (packMask & 1) != 0 ? UnPackTable(ref r) : new Dictionary<uint, uint>();
+        return new LandBlockInfoEntry(id, (int)numCells, objects, buildings, packMask, restrictions);
     }
 
     /// <summary>A door: flags, the other cell's low word, the other portal's index, the visible-cell count and ids, and two
     /// bytes of padding after an odd count.</summary>
     // retail: CBldPortal::UnPack (acclient.c:362498)
-    private static RetailBldPortal UnpackBldPortal(ref RetailDataReader r, uint blockMask)
+    private static BldPortalInfo UnPackBldPortal(ref RetailDataReader r, uint blockMask)
     {
         ushort flags = r.ReadUInt16("door flags");
         uint other = blockMask | r.ReadUInt16("door other cell");
@@ -154,13 +154,13 @@ public sealed class RetailLandBlockInfo
             r.Skip(2, "door padding");
         }
 
-        return new RetailBldPortal(flags, other, otherPortal, stabs);
+        return new BldPortalInfo(flags, other, otherPortal, stabs);
     }
 
     /// <summary>A hash table of 32-bit keys and values: the entry count (low word) and table size (high word), then the pairs.
     /// A zero table size holds no entries; sizes above 0x10000 are refused, as retail refuses them.</summary>
     // retail: PackableHashTable<unsigned long,int>::UnPack (acclient.c:440980), the shape the unsigned-long table shares
-    private static Dictionary<uint, uint> UnpackTable(ref RetailDataReader r)
+    private static Dictionary<uint, uint> UnPackTable(ref RetailDataReader r)
     {
         r.Structure = "PackableHashTable";
         int at = r.Offset;

@@ -14,7 +14,7 @@ namespace AcDream.Core.Physics.Data;
 /// <param name="Key">The location's key (retail hash key).</param>
 /// <param name="PartId">The part index. Retail: <c>part_id</c>.</param>
 /// <param name="Frame">The frame in the part. Retail: <c>frame</c>.</param>
-public readonly record struct RetailLocation(uint Key, uint PartId, Frame Frame);
+public readonly record struct LocationInfo(uint Key, uint PartId, Frame Frame);
 
 /// <summary>A light of a Setup (retail <c>LIGHTINFO</c>), read and kept for completeness.</summary>
 /// <param name="Type">Retail <c>type</c>.</param>
@@ -23,7 +23,7 @@ public readonly record struct RetailLocation(uint Key, uint PartId, Frame Frame)
 /// <param name="Intensity">Retail <c>intensity</c>.</param>
 /// <param name="Falloff">Retail <c>falloff</c>.</param>
 /// <param name="ConeAngle">Retail <c>cone_angle</c>.</param>
-public readonly record struct RetailLight(uint Type, Frame Offset, uint Color, float Intensity, float Falloff, float ConeAngle);
+public readonly record struct LightInfo(uint Type, Frame Offset, uint Color, float Intensity, float Falloff, float ConeAngle);
 
 /// <summary>
 /// A Setup (data-file entry 0x02xxxxxx: how an object is put together) as retail's <c>CSetup::UnPack</c> reads it: the parts
@@ -34,7 +34,7 @@ public readonly record struct RetailLight(uint Type, Frame Offset, uint Color, f
 /// </summary>
 /// <remarks>All fields are plain data, so an animated part array can take the parts, placement frames and default ids as
 /// they are.</remarks>
-public sealed class RetailSetup
+public sealed class SetupEntry
 {
     /// <summary>Retail flag 1: parent indices follow the parts.</summary>
     public const uint HasParentFlag = 1;
@@ -51,18 +51,18 @@ public sealed class RetailSetup
     private readonly uint[] _parts;
     private readonly uint[] _parentIndices;
     private readonly Vector3[] _defaultScales;
-    private readonly RetailLocation[] _holdingLocations;
-    private readonly RetailLocation[] _connectionPoints;
+    private readonly LocationInfo[] _holdingLocations;
+    private readonly LocationInfo[] _connectionPoints;
     private readonly Dictionary<uint, Frame[]> _placementFrames;
     private readonly Dictionary<uint, AnimFrame> _placementAnimFrames;
     private readonly CylSphere[] _cylSpheres;
     private readonly Sphere[] _spheres;
-    private readonly RetailLight[] _lights;
+    private readonly LightInfo[] _lights;
     private readonly int _shapesOffset;
 
-    private RetailSetup(uint id, uint flags, uint[] parts, uint[] parentIndices, Vector3[] defaultScales, RetailLocation[] holding,
-        RetailLocation[] connection, Dictionary<uint, Frame[]> placement, Dictionary<uint, AnimFrame> placementAnim, CylSphere[] cylSpheres, Sphere[] spheres, float height,
-        float radius, float stepUp, float stepDown, Sphere sorting, Sphere selection, RetailLight[] lights, uint[] ids, int shapesOffset)
+    private SetupEntry(uint id, uint flags, uint[] parts, uint[] parentIndices, Vector3[] defaultScales, LocationInfo[] holding,
+        LocationInfo[] connection, Dictionary<uint, Frame[]> placement, Dictionary<uint, AnimFrame> placementAnim, CylSphere[] cylSpheres, Sphere[] spheres, float height,
+        float radius, float stepUp, float stepDown, Sphere sorting, Sphere selection, LightInfo[] lights, uint[] ids, int shapesOffset)
     {
         Id = id;
         Flags = flags;
@@ -113,10 +113,10 @@ public sealed class RetailSetup
     public ReadOnlySpan<Vector3> DefaultScales => _defaultScales;
 
     /// <summary>The holding locations. Retail: <c>holding_locations</c>.</summary>
-    public ReadOnlySpan<RetailLocation> HoldingLocations => _holdingLocations;
+    public ReadOnlySpan<LocationInfo> HoldingLocations => _holdingLocations;
 
     /// <summary>The connection points. Retail: <c>connection_points</c>.</summary>
-    public ReadOnlySpan<RetailLocation> ConnectionPoints => _connectionPoints;
+    public ReadOnlySpan<LocationInfo> ConnectionPoints => _connectionPoints;
 
     /// <summary>The placement frames: for each placement key, one frame per part. Retail: <c>placement_frames</c>.</summary>
     public IReadOnlyDictionary<uint, Frame[]> PlacementFrames => _placementFrames;
@@ -151,7 +151,7 @@ public sealed class RetailSetup
     public Sphere SelectionSphere { get; }
 
     /// <summary>The lights. Retail: <c>lights</c>.</summary>
-    public ReadOnlySpan<RetailLight> Lights => _lights;
+    public ReadOnlySpan<LightInfo> Lights => _lights;
 
     /// <summary>Retail <c>default_anim_id</c>.</summary>
     public uint DefaultAnimationId { get; }
@@ -171,7 +171,7 @@ public sealed class RetailSetup
     /// <summary>The holding location with key <paramref name="locationId"/>, or null. Retail
     /// <c>CSetup::GetHoldingLocation</c> (a hash lookup: of two entries with one key, the later read is found).</summary>
     // retail: CSetup::GetHoldingLocation (acclient.c:336113)
-    public RetailLocation? GetHoldingLocation(uint locationId)
+    public LocationInfo? GetHoldingLocation(uint locationId)
     {
         for (int i = _holdingLocations.Length - 1; i >= 0; i--)
         {
@@ -207,7 +207,7 @@ public sealed class RetailSetup
     /// <exception cref="RetailDataFormatException">The bytes are not a Setup (truncated, inconsistent, a frame not valid, or a
     /// placement frame's animation hook not valid).</exception>
     // retail: CSetup::UnPack (acclient.c:335520)
-    public static RetailSetup Unpack(ReadOnlySpan<byte> data)
+    public static SetupEntry UnPack(ReadOnlySpan<byte> data)
     {
         var r = new RetailDataReader(data, "CSetup");
         uint id = r.ReadUInt32("id");
@@ -241,8 +241,8 @@ public sealed class RetailSetup
             }
         }
 
-        RetailLocation[] holding = ReadLocations(ref r, "holding location");
-        RetailLocation[] connection = ReadLocations(ref r, "connection point");
+        LocationInfo[] holding = ReadLocations(ref r, "holding location");
+        LocationInfo[] connection = ReadLocations(ref r, "connection point");
         int numPlacements = r.ReadCount("placement frame count", 8);
         var placement = new Dictionary<uint, Frame[]>(numPlacements);
         var placementAnim = new Dictionary<uint, AnimFrame>(numPlacements);
@@ -287,13 +287,13 @@ public sealed class RetailSetup
         Sphere sorting = Sphere.UnPack(ref r, "sorting sphere");
         Sphere selection = Sphere.UnPack(ref r, "selection sphere");
         int numLights = r.ReadCount("light count", 48);
-        var lights = new RetailLight[numLights];
+        var lights = new LightInfo[numLights];
         for (int i = 0; i < numLights; i++)
         {
             uint type = r.ReadUInt32("light type");
             Frame offset = r.ReadFrame("light frame");
             uint color = r.ReadUInt32("light colour");
-            lights[i] = new RetailLight(type, offset, color, r.ReadSingle("light intensity"), r.ReadSingle("light falloff"), r.ReadSingle("light cone angle"));
+            lights[i] = new LightInfo(type, offset, color, r.ReadSingle("light intensity"), r.ReadSingle("light falloff"), r.ReadSingle("light cone angle"));
         }
 
         var ids = new uint[5];
@@ -303,20 +303,20 @@ public sealed class RetailSetup
         }
 
         r.Align4();
-        return new RetailSetup(id, flags, parts, parents, scales, holding, connection, placement, placementAnim, cyl, spheres, height, radius, stepUp,
+        return new SetupEntry(id, flags, parts, parents, scales, holding, connection, placement, placementAnim, cyl, spheres, height, radius, stepUp,
             stepDown, sorting, selection, lights, ids, shapesAt);
     }
 
     // A location hash: the count, then each key, part id and frame (Frame::UnPack: origin, quaternion w x y z, valid).
-    private static RetailLocation[] ReadLocations(ref RetailDataReader r, string what)
+    private static LocationInfo[] ReadLocations(ref RetailDataReader r, string what)
     {
         int n = r.ReadCount(what + " count", 36);
-        var list = new RetailLocation[n];
+        var list = new LocationInfo[n];
         for (int i = 0; i < n; i++)
         {
             uint key = r.ReadUInt32(what + " key");
             uint part = r.ReadUInt32(what + " part");
-            list[i] = new RetailLocation(key, part, r.ReadFrame(what + " frame"));
+            list[i] = new LocationInfo(key, part, r.ReadFrame(what + " frame"));
         }
 
         return list;

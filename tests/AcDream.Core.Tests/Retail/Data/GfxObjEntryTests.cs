@@ -15,7 +15,7 @@ namespace AcDream.Core.Tests.Retail.Data;
 /// (<c>BSPTREE::UnPack</c>, <c>BSPNODE::UnPackChild</c> / <c>UnPack</c>, <c>BSPLEAF::UnPackLeaf</c>,
 /// <c>BSPPORTAL::UnPackPortal</c>): a test per field group, bytes written field by field.
 /// </summary>
-public class RetailGfxObjTests
+public class GfxObjEntryTests
 {
     // A unit square floor (z = 0, counter-clockwise from above: normal +z) and a wall x = 1 facing -x.
     private static readonly Vector3[] Verts =
@@ -77,7 +77,7 @@ public class RetailGfxObjTests
     [Fact]
     public void Id_Flags_Surfaces_AndVertexArray()
     {
-        RetailGfxObj g = RetailGfxObj.Unpack(Entry());
+        GfxObjEntry g = GfxObjEntry.UnPack(Entry());
         Assert.Equal(0x01000AAAu, g.Id);
         Assert.Equal(0xBu, g.Flags);
         Assert.Equal(new uint[] { 0x08000001, 0x08000002 }, g.SurfaceIds.ToArray());
@@ -87,7 +87,7 @@ public class RetailGfxObjTests
     [Fact]
     public void PhysicsPolygons_TheirVertices_AndPlanesByMakePlane()
     {
-        RetailGfxObj g = RetailGfxObj.Unpack(Entry());
+        GfxObjEntry g = GfxObjEntry.UnPack(Entry());
         Assert.Equal(2, g.PhysicsPolygons.Length);
         Polygon wall = g.PhysicsPolygons[1];
         Assert.Equal(1, wall.PolyId);
@@ -102,7 +102,7 @@ public class RetailGfxObjTests
     [Fact]
     public void PhysicsBsp_KeepsTheStoredNodeOrder_Planes_Leaves_AndSpheres()
     {
-        BspTree t = RetailGfxObj.Unpack(Entry()).PhysicsBsp!;
+        BspTree t = GfxObjEntry.UnPack(Entry()).PhysicsBsp!;
         // Preorder as stored: 0 root BPIN, 1 solid leaf (wall), 2 BpnN, 3 leaf (floor).
         Assert.Equal(4, t.Nodes.Length);
         Assert.Equal(0, t.Root);
@@ -118,7 +118,7 @@ public class RetailGfxObjTests
         Assert.False(t.Nodes[3].Solid);
         Assert.Equal(1, t.Nodes[3].LeafIndex);
         // physics_sphere = BSPTREE::GetSphere = the root's sphere.
-        Assert.Equal(1f, RetailGfxObj.Unpack(Entry()).PhysicsSphere!.Value.Radius);
+        Assert.Equal(1f, GfxObjEntry.UnPack(Entry()).PhysicsSphere!.Value.Radius);
     }
 
     [Fact]
@@ -127,7 +127,7 @@ public class RetailGfxObjTests
         // A sphere at (0.9, 0.5, 0.5), r 0.1, touching no polygon: the root's plane x = 0.5 puts it 0.4 (> r) on the positive
         // side, whose stored leaf is solid: BSPLEAF::sphere_intersects_solid's centre check says inside. BspBuilder's tree over
         // the same two polygons has no solid leaf, so the same test says outside.
-        RetailGfxObj g = RetailGfxObj.Unpack(Entry());
+        GfxObjEntry g = GfxObjEntry.UnPack(Entry());
         var s = new Sphere(new Vector3(0.9f, 0.5f, 0.5f), 0.1f);
         Assert.True(g.PhysicsBsp!.SphereIntersectsSolid(s, centerCheck: true));
         Assert.False(BspBuilder.Build(g.PhysicsPolygons).SphereIntersectsSolid(s, centerCheck: true));
@@ -136,12 +136,12 @@ public class RetailGfxObjTests
     [Fact]
     public void SortCenter_DrawingPartConsumedExactly_AndDegradeId()
     {
-        RetailGfxObj g = RetailGfxObj.Unpack(Entry());
+        GfxObjEntry g = GfxObjEntry.UnPack(Entry());
         Assert.Equal(new Vector3(0.5f, 0.5f, 0.25f), g.SortCenter);
         Assert.Equal(1, g.DrawingPolygonCount);
         // The degrade id is read after the drawing tree: had a byte been skipped or left, it would not read back.
         Assert.Equal(0x11000001u, g.DegradeId);
-        Assert.Equal(0u, RetailGfxObj.Unpack(Entry(drawing: false, degrade: null)).DegradeId);
+        Assert.Equal(0u, GfxObjEntry.UnPack(Entry(drawing: false, degrade: null)).DegradeId);
     }
 
     [Fact]
@@ -182,7 +182,7 @@ public class RetailGfxObjTests
             }
 
             w.Vector3(Vector3.Zero).Single(2f);
-            BspTree t = RetailGfxObj.Unpack(Entry(drawing: false, degrade: null, tree: w.ToArray())).PhysicsBsp!;
+            BspTree t = GfxObjEntry.UnPack(Entry(drawing: false, degrade: null, tree: w.ToArray())).PhysicsBsp!;
             Assert.Equal((uint)tag, (uint)t.Nodes[0].Type);
             Assert.Equal(pos ? 1 : -1, t.Nodes[0].PosNode);
             Assert.Equal(neg ? (pos ? 2 : 1) : -1, t.Nodes[0].NegNode);
@@ -196,7 +196,7 @@ public class RetailGfxObjTests
         w.UInt32(RetailEntries.Port).Vector3(Vector3.UnitX).Single(0f);
         w.UInt32(RetailEntries.Leaf).Int32(0).UInt32(0).Vector3(Vector3.Zero).Single(1f).UInt32(0);
         w.UInt32(RetailEntries.Leaf).Int32(1).UInt32(0).Vector3(Vector3.Zero).Single(1f).UInt32(0);
-        BspTree t = RetailGfxObj.Unpack(Entry(drawing: false, tree: w.ToArray())).PhysicsBsp!;
+        BspTree t = GfxObjEntry.UnPack(Entry(drawing: false, tree: w.ToArray())).PhysicsBsp!;
         Assert.Equal(BspNodeType.Portal, t.Nodes[0].Type);
         Assert.Equal((1, 2), (t.Nodes[0].PosNode, t.Nodes[0].NegNode));
     }
@@ -208,7 +208,7 @@ public class RetailGfxObjTests
         int treeAt = good.Length - PhysicsTree().Length - 12;
         byte[] bad = (byte[])good.Clone();
         BitConverter.TryWriteBytes(bad.AsSpan(treeAt), 0x12345678u);
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailGfxObj.Unpack(bad));
+        var e = Assert.Throws<RetailDataFormatException>(() => GfxObjEntry.UnPack(bad));
         Assert.Equal("BSPTREE", e.Structure);
         Assert.Equal(treeAt, e.Offset);
         Assert.Contains("0x12345678", e.Reason);
@@ -219,7 +219,7 @@ public class RetailGfxObjTests
     {
         var w = new RetailDataWriter();
         w.UInt32(RetailEntries.Leaf).Int32(0).UInt32(0).Vector3(Vector3.Zero).Single(1f).UInt32(1).Int16(2); // 2 polygons: 0, 1
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailGfxObj.Unpack(Entry(drawing: false, tree: w.ToArray())));
+        var e = Assert.Throws<RetailDataFormatException>(() => GfxObjEntry.UnPack(Entry(drawing: false, tree: w.ToArray())));
         Assert.Contains("polygon index 2", e.Reason);
     }
 
@@ -233,7 +233,7 @@ public class RetailGfxObjTests
         RetailEntries.Compressed(w, 1);
         int polyAt = w.Length;
         RetailEntries.Polygon(w, new PolyDef(0, [0, 1, 6]));
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailGfxObj.Unpack(w.ToArray()));
+        var e = Assert.Throws<RetailDataFormatException>(() => GfxObjEntry.UnPack(w.ToArray()));
         Assert.Equal("CPolygon", e.Structure);
         Assert.Equal(polyAt + 12 + 4, e.Offset); // the third vertex id
     }
@@ -242,12 +242,12 @@ public class RetailGfxObjTests
     public void ATreeDeeperThanTheLimit_IsAFormatError_NotAStackOverflow()
     {
         var w = new RetailDataWriter();
-        for (int i = 0; i < RetailBsp.MaxDepth + 10; i++)
+        for (int i = 0; i < BspReader.MaxDepth + 10; i++)
         {
             w.UInt32(RetailEntries.BPIn).Vector3(Vector3.UnitZ).Single(i);
         }
 
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailGfxObj.Unpack(Entry(drawing: false, tree: w.ToArray())));
+        var e = Assert.Throws<RetailDataFormatException>(() => GfxObjEntry.UnPack(Entry(drawing: false, tree: w.ToArray())));
         Assert.Contains("deeper than 256", e.Reason);
     }
 
@@ -260,7 +260,7 @@ public class RetailGfxObjTests
         Support.BspScene.AddBox(polys, new Vector3(3f, 0f, 0f), new Vector3(4f, 1f, 1f));
         BspTree built = BspBuilder.Build(polys.ToArray(), 2);
         (List<Vector3> v, PolyDef[] defs) = RetailEntries.Defs(built.Polygons.ToArray());
-        BspTree read = RetailGfxObj.Unpack(RetailEntries.GfxObj(0x01000002, v, defs, built, Vector3.Zero)).PhysicsBsp!;
+        BspTree read = GfxObjEntry.UnPack(RetailEntries.GfxObj(0x01000002, v, defs, built, Vector3.Zero)).PhysicsBsp!;
         Assert.Equal(built.Nodes.Length, read.Nodes.Length);
         for (int i = 0; i < built.Nodes.Length; i++)
         {

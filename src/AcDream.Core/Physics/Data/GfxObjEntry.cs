@@ -11,7 +11,7 @@ namespace AcDream.Core.Physics.Data;
 /// half kept: the vertex positions, the physics polygons, the physics BSP as stored, the physics sphere and the sort centre.
 /// The surfaces' ids are kept; the drawing polygons and the drawing BSP are read and dropped.
 /// </summary>
-public sealed class RetailGfxObj
+public sealed class GfxObjEntry
 {
     /// <summary>Retail flag 1: the entry holds physics polygons and a physics BSP.</summary>
     public const uint HasPhysicsFlag = 1;
@@ -26,7 +26,7 @@ public sealed class RetailGfxObj
     private readonly Vector3[] _vertices;
     private readonly Polygon[] _physicsPolygons;
 
-    private RetailGfxObj(uint id, uint flags, uint[] surfaceIds, Vector3[] vertices, Polygon[] physicsPolygons, BspTree? physicsBsp,
+    private GfxObjEntry(uint id, uint flags, uint[] surfaceIds, Vector3[] vertices, Polygon[] physicsPolygons, BspTree? physicsBsp,
         Vector3 sortCenter, uint degradeId, int drawingPolygonCount)
     {
         Id = id;
@@ -82,13 +82,13 @@ public sealed class RetailGfxObj
     /// </summary>
     /// <exception cref="RetailDataFormatException">The bytes are not a GfxObj (truncated, inconsistent, or not finite).</exception>
     // retail: CGfxObj::Serialize (acclient.c:356682)
-    public static RetailGfxObj Unpack(ReadOnlySpan<byte> data)
+    public static GfxObjEntry UnPack(ReadOnlySpan<byte> data)
     {
         var r = new RetailDataReader(data, "CGfxObj");
-        return Unpack(ref r);
+        return UnPack(ref r);
     }
 
-    internal static RetailGfxObj Unpack(ref RetailDataReader r)
+    internal static GfxObjEntry UnPack(ref RetailDataReader r)
     {
         uint id = r.ReadUInt32("id");
         r.Align4();
@@ -107,10 +107,10 @@ public sealed class RetailGfxObj
         {
             r.Structure = "CPolygon";
             int n = r.CheckCount(r.ReadCompressedUInt32("physics polygon count"), "physics polygon count", 12);
-            RetailPolygon[] raw = SerializePolygons(ref r, n, vertices.Length);
-            physicsPolys = RetailPolygon.ToPolygons(raw, vertices, "CGfxObj");
+            PolygonInfo[] raw = SerializePolygons(ref r, n, vertices.Length);
+            physicsPolys = PolygonInfo.ToPolygons(raw, vertices, "CGfxObj");
             int bspAt = r.Offset;
-            physicsBsp = SerializeBsp(ref r, RetailBspKind.Physics, physicsPolys, physicsPolys.Length)!;
+            physicsBsp = SerializeBsp(ref r, BspKind.Physics, physicsPolys, physicsPolys.Length)!;
             if (physicsBsp.Sphere.Radius < 0f)
             {
                 throw r.ErrorAt(bspAt, "the physics sphere has a negative radius");
@@ -125,7 +125,7 @@ public sealed class RetailGfxObj
             r.Structure = "CPolygon";
             drawingCount = r.CheckCount(r.ReadCompressedUInt32("drawing polygon count"), "drawing polygon count", 12);
             SerializePolygons(ref r, drawingCount, vertices.Length);
-            SerializeBsp(ref r, RetailBspKind.Drawing, [], drawingCount);
+            SerializeBsp(ref r, BspKind.Drawing, [], drawingCount);
         }
 
         r.Structure = "CGfxObj";
@@ -136,7 +136,7 @@ public sealed class RetailGfxObj
             degrade = r.ReadUInt32("degrade id");
         }
 
-        return new RetailGfxObj(id, flags, surfaces, vertices, physicsPolys, physicsBsp, sortCenter, degrade, drawingCount);
+        return new GfxObjEntry(id, flags, surfaces, vertices, physicsPolys, physicsBsp, sortCenter, degrade, drawingCount);
     }
 
     // The vertex array through its own unpack.
@@ -144,23 +144,23 @@ public sealed class RetailGfxObj
     private static Vector3[] SerializeVertexArray(ref RetailDataReader r)
     {
         r.Structure = "CVertexArray";
-        return RetailVertexArray.Unpack(ref r);
+        return VertexArrayReader.UnPack(ref r);
     }
 
     // Each polygon through its own unpack.
     // retail: SB_AsPackObj<0>::Serialize (acclient.c:356272), the CPolygon instance
-    private static RetailPolygon[] SerializePolygons(ref RetailDataReader r, int count, int numVertices)
+    private static PolygonInfo[] SerializePolygons(ref RetailDataReader r, int count, int numVertices)
     {
         r.Structure = "CPolygon";
-        return RetailPolygon.UnpackList(ref r, count, numVertices);
+        return PolygonInfo.UnPackList(ref r, count, numVertices);
     }
 
     // A BSP tree through its own unpack.
     // retail: SB_AsPackObj<0>::Serialize (acclient.c:356306), the BSPTREE instance
-    private static BspTree? SerializeBsp(ref RetailDataReader r, RetailBspKind kind, Polygon[] polygons, int numPolys)
+    private static BspTree? SerializeBsp(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys)
     {
         r.Structure = "BSPTREE";
-        return RetailBsp.UnpackTree(ref r, kind, polygons, numPolys);
+        return BspReader.UnPackTree(ref r, kind, polygons, numPolys);
     }
 
     // The sort centre: 12 bytes, x, y, z.

@@ -7,15 +7,29 @@ namespace AcDream.Core.Physics.Data;
 
 /// <summary>
 /// A landblock's terrain (data-file entry 0xXXYYFFFF) as retail's <c>CLandBlock::UnPack</c> and
-/// <c>CLandBlockStruct::UnPack</c> read it: whether a <see cref="RetailLandBlockInfo"/> (0xXXYYFFFE) exists, the 81 terrain
+/// <c>CLandBlockStruct::UnPack</c> read it: whether a <see cref="LandBlockInfoEntry"/> (0xXXYYFFFE) exists, the 81 terrain
 /// words and the 81 height indices (index <c>x * 9 + y</c>). Build the library's landblock with <see cref="ToLandBlock"/>.
 /// </summary>
-public sealed class RetailLandBlock
+public sealed class LandBlockEntry
 {
     private readonly ushort[] _terrain;
     private readonly byte[] _height;
 
-    private RetailLandBlock(uint id, bool hasInfo, ushort[] terrain, byte[] height)
+    /// <summary>Creates the entry of landblock <paramref name="id"/> (<c>0xXXYYFFFF</c>) from its 81 height indices and 81
+    /// terrain words (index <c>x * 9 + y</c>), as the terrain fixtures give them (<see cref="TerrainDataFiles"/>,
+    /// <see cref="TerrainImage"/>); the arrays are copied.</summary>
+    /// <exception cref="ArgumentException">An array is not 81 long.</exception>
+    public LandBlockEntry(uint id, ReadOnlySpan<byte> height, ReadOnlySpan<ushort> terrain, bool hasInfo = false)
+        : this(id, hasInfo, CheckedCopy(terrain, nameof(terrain)), CheckedCopy(height, nameof(height)))
+    {
+    }
+
+    private static T[] CheckedCopy<T>(ReadOnlySpan<T> values, string paramName) =>
+        values.Length == LandBlock.VertexCount
+            ? values.ToArray()
+            : throw new ArgumentException($"A landblock has {LandBlock.VertexCount} height indices and terrain words.", paramName);
+
+    private LandBlockEntry(uint id, bool hasInfo, ushort[] terrain, byte[] height)
     {
         Id = id;
         HasInfo = hasInfo;
@@ -39,7 +53,7 @@ public sealed class RetailLandBlock
     /// <exception cref="RetailDataFormatException">The bytes are not a landblock (also: the id is not of the form 0xXXYYFFFF
     /// inside the world).</exception>
     // retail: CLandBlock::UnPack (acclient.c:351520)
-    public static RetailLandBlock Unpack(ReadOnlySpan<byte> data)
+    public static LandBlockEntry UnPack(ReadOnlySpan<byte> data)
     {
         var r = new RetailDataReader(data, "CLandBlock");
         uint id = r.ReadUInt32("id");
@@ -52,13 +66,13 @@ public sealed class RetailLandBlock
         r.Structure = "CLandBlockStruct";
         var terrain = new ushort[LandBlock.VertexCount];
         var height = new byte[LandBlock.VertexCount];
-        UnpackStruct(ref r, terrain, height);
-        return new RetailLandBlock(id, hasInfo, terrain, height);
+        UnPackStruct(ref r, terrain, height);
+        return new LandBlockEntry(id, hasInfo, terrain, height);
     }
 
     /// <summary>The 81 terrain words, the 81 height bytes, then 4-alignment.</summary>
     // retail: CLandBlockStruct::UnPack (acclient.c:354108)
-    private static void UnpackStruct(ref RetailDataReader r, ushort[] terrain, byte[] height)
+    private static void UnPackStruct(ref RetailDataReader r, ushort[] terrain, byte[] height)
     {
         for (int i = 0; i < terrain.Length; i++)
         {

@@ -10,9 +10,9 @@ namespace AcDream.Core.Physics.Data;
 /// the owner's vertex array (the texture indices are consumed and dropped). <see cref="ToPolygon"/> resolves it into the
 /// library's <see cref="Polygon"/> (whose constructor runs <c>CPolygon::make_plane</c>, as the unpack does).
 /// </summary>
-internal sealed class RetailPolygon
+internal sealed class PolygonInfo
 {
-    private RetailPolygon(short polyId, byte stippling, int sidesType, short posSurface, short negSurface, ushort[] vertexIds, int offset)
+    private PolygonInfo(short polyId, byte stippling, int sidesType, short posSurface, short negSurface, ushort[] vertexIds, int offset)
     {
         PolyId = polyId;
         Stippling = stippling;
@@ -50,7 +50,7 @@ internal sealed class RetailPolygon
     /// lacks 8. A vertex id past <paramref name="numVertices"/> is a format error (retail would point past its array).
     /// </summary>
     // retail: CPolygon::UnPack (acclient.c:359808)
-    public static RetailPolygon Unpack(ref RetailDataReader r, int numVertices)
+    public static PolygonInfo UnPack(ref RetailDataReader r, int numVertices)
     {
         int at = r.Offset;
         short polyId = (short)r.ReadUInt16("polygon id");
@@ -86,17 +86,17 @@ internal sealed class RetailPolygon
             negSurface = posSurface;
         }
 
-        return new RetailPolygon(polyId, stippling, sidesType, posSurface, negSurface, ids, at);
+        return new PolygonInfo(polyId, stippling, sidesType, posSurface, negSurface, ids, at);
     }
 
     /// <summary>Reads <paramref name="count"/> polygons (each at least 12 bytes).</summary>
-    public static RetailPolygon[] UnpackList(ref RetailDataReader r, int count, int numVertices)
+    public static PolygonInfo[] UnPackList(ref RetailDataReader r, int count, int numVertices)
     {
         r.CheckCount((uint)count, "polygon count", 12);
-        var list = new RetailPolygon[count];
+        var list = new PolygonInfo[count];
         for (int i = 0; i < count; i++)
         {
-            list[i] = Unpack(ref r, numVertices);
+            list[i] = UnPack(ref r, numVertices);
         }
 
         return list;
@@ -121,7 +121,7 @@ internal sealed class RetailPolygon
     }
 
     /// <summary>Every polygon of the list resolved (see <see cref="ToPolygon"/>).</summary>
-    public static Polygon[] ToPolygons(RetailPolygon[] list, Vector3[] vertices, string structure)
+    public static Polygon[] ToPolygons(PolygonInfo[] list, Vector3[] vertices, string structure)
     {
         var result = new Polygon[list.Length];
         for (int i = 0; i < list.Length; i++)

@@ -8,15 +8,15 @@ namespace AcDream.Core.Fixtures.Data;
 
 /// <summary>
 /// Retail's BSP pack (<c>BSPNODE::PackChild</c> / <c>Pack</c>, <c>BSPLEAF::PackLeaf</c>, <c>BSPPORTAL::PackPortal</c> and their
-/// size functions): a <see cref="BspTree"/> written in the layout <see cref="RetailBsp"/> reads, depth first from the root, so
+/// size functions): a <see cref="BspTree"/> written in the layout <see cref="BspReader"/> reads, depth first from the root, so
 /// a tree round-trips (the library ships the reader only; the writer lives here). As retail, a split node writes the children
 /// it has (not the ones its tag names), and a polygon list writes each polygon's <see cref="Polygon.PolyId"/> (retail's
 /// <c>poly_id</c>, which the unpack reads back as the index into the owner's list: the two agree in retail's data).
 /// </summary>
-internal static class RetailBspPack
+internal static class BspPack
 {
     /// <summary>The tree's bytes for <paramref name="kind"/> (what <c>BSPTREE::UnPack</c> reads: the root as a child).</summary>
-    public static byte[] Pack(BspTree tree, RetailBspKind kind)
+    public static byte[] Pack(BspTree tree, BspKind kind)
     {
         ArgumentNullException.ThrowIfNull(tree);
         var bytes = new byte[PackChildSize(tree, tree.Root, kind)];
@@ -27,7 +27,7 @@ internal static class RetailBspPack
 
     /// <summary>The child's tag (4 bytes) and its body.</summary>
     // retail: BSPNODE::pack_child_size (acclient.c:363290)
-    private static int PackChildSize(BspTree tree, int i, RetailBspKind kind)
+    private static int PackChildSize(BspTree tree, int i, BspKind kind)
     {
         BspNode n = tree.Nodes[i];
         return n.Type switch
@@ -40,7 +40,7 @@ internal static class RetailBspPack
 
     /// <summary>Writes the tag, then the node as its type packs.</summary>
     // retail: BSPNODE::PackChild (acclient.c:363316)
-    private static void PackChild(BspTree tree, int i, RetailBspKind kind, Span<byte> b, ref int at)
+    private static void PackChild(BspTree tree, int i, BspKind kind, Span<byte> b, ref int at)
     {
         BspNode n = tree.Nodes[i];
         U32(b, ref at, (uint)n.Type);
@@ -59,7 +59,7 @@ internal static class RetailBspPack
     }
 
     // retail: BSPNODE::pack_size (acclient.c:363108)
-    private static int PackSize(BspTree tree, in BspNode n, RetailBspKind kind)
+    private static int PackSize(BspTree tree, in BspNode n, BspKind kind)
     {
         int size = 16;
         if (n.PosNode >= 0)
@@ -74,15 +74,15 @@ internal static class RetailBspPack
 
         return kind switch
         {
-            RetailBspKind.Drawing => size + 2 * n.NumPolys + 20,
-            RetailBspKind.Physics => size + 16,
+            BspKind.Drawing => size + 2 * n.NumPolys + 20,
+            BspKind.Physics => size + 16,
             _ => size,
         };
     }
 
     /// <summary>A split node: the plane, the children it has, then the sphere (drawing, physics) and the polygon ids (drawing).</summary>
     // retail: BSPNODE::Pack (acclient.c:363142)
-    private static void PackNode(BspTree tree, in BspNode n, RetailBspKind kind, Span<byte> b, ref int at)
+    private static void PackNode(BspTree tree, in BspNode n, BspKind kind, Span<byte> b, ref int at)
     {
         Plane(b, ref at, n.SplittingPlane);
         if (n.PosNode >= 0)
@@ -95,27 +95,27 @@ internal static class RetailBspPack
             PackChild(tree, n.NegNode, kind, b, ref at);
         }
 
-        if (kind == RetailBspKind.Cell)
+        if (kind == BspKind.Cell)
         {
             return;
         }
 
         SphereOut(b, ref at, n.Sphere);
-        if (kind == RetailBspKind.Drawing)
+        if (kind == BspKind.Drawing)
         {
             PolyIds(tree, n, b, ref at, withCount: true);
         }
     }
 
     // The leaf's size: 4, or 2 × polygons + 28 in a physics tree.
-    private static int PackLeafSize(in BspNode n, RetailBspKind kind) => kind == RetailBspKind.Physics ? 2 * n.NumPolys + 28 : 4;
+    private static int PackLeafSize(in BspNode n, BspKind kind) => kind == BspKind.Physics ? 2 * n.NumPolys + 28 : 4;
 
     /// <summary>A leaf: its index, then (physics) the solid flag, the sphere, the polygon count and ids.</summary>
     // retail: BSPLEAF::PackLeaf (acclient.c:364091)
-    private static void PackLeaf(BspTree tree, in BspNode n, RetailBspKind kind, Span<byte> b, ref int at)
+    private static void PackLeaf(BspTree tree, in BspNode n, BspKind kind, Span<byte> b, ref int at)
     {
         U32(b, ref at, (uint)n.LeafIndex);
-        if (kind == RetailBspKind.Physics)
+        if (kind == BspKind.Physics)
         {
             U32(b, ref at, n.Solid ? 1u : 0u);
             SphereOut(b, ref at, n.Sphere);
@@ -124,21 +124,21 @@ internal static class RetailBspPack
     }
 
     // retail: BSPPORTAL::pack_portal_size (acclient.c:364565)
-    private static int PackPortalSize(BspTree tree, in BspNode n, RetailBspKind kind)
+    private static int PackPortalSize(BspTree tree, in BspNode n, BspKind kind)
     {
         int size = PackChildSize(tree, n.PosNode, kind) + 16 + PackChildSize(tree, n.NegNode, kind);
         // The library keeps no portal lists (drawing trees are not kept): num_portals is 0.
-        return kind == RetailBspKind.Drawing ? size + 2 * (n.NumPolys + 2 * 0 + 12) : size;
+        return kind == BspKind.Drawing ? size + 2 * (n.NumPolys + 2 * 0 + 12) : size;
     }
 
     /// <summary>A portal node: the plane, both children, then (drawing) the sphere, the polygon and portal counts and lists.</summary>
     // retail: BSPPORTAL::PackPortal (acclient.c:364589)
-    private static void PackPortal(BspTree tree, in BspNode n, RetailBspKind kind, Span<byte> b, ref int at)
+    private static void PackPortal(BspTree tree, in BspNode n, BspKind kind, Span<byte> b, ref int at)
     {
         Plane(b, ref at, n.SplittingPlane);
         PackChild(tree, n.PosNode, kind, b, ref at);
         PackChild(tree, n.NegNode, kind, b, ref at);
-        if (kind == RetailBspKind.Drawing)
+        if (kind == BspKind.Drawing)
         {
             SphereOut(b, ref at, n.Sphere);
             U32(b, ref at, (uint)n.NumPolys);

@@ -7,7 +7,7 @@ using AcDream.Core.Physics.Format;
 namespace AcDream.Core.Physics.Data;
 
 /// <summary>What a stored BSP tree holds per node. Retail: <c>BSPTreeType</c> (<c>BSPNODE::pack_tree_type</c>).</summary>
-internal enum RetailBspKind
+internal enum BspKind
 {
     /// <summary>A drawing tree: node spheres and polygon lists, portal lists in portal nodes (retail 0).</summary>
     Drawing = 0,
@@ -33,18 +33,18 @@ internal enum RetailBspKind
 /// without bound; bad bytes must not overflow the stack). The stream form cannot express a cycle or a shared child (children
 /// are stored inline), so none can be read.</para>
 /// </remarks>
-internal sealed class RetailBsp
+internal sealed class BspReader
 {
     /// <summary>Deepest node accepted, counting the root as 1.</summary>
     public const int MaxDepth = 256;
 
-    private readonly RetailBspKind _kind;
+    private readonly BspKind _kind;
     private readonly int _numPolys;
     private readonly List<BspNode> _nodes;
     private readonly List<int> _polyIndices;
     private int _leaves;
 
-    private RetailBsp(RetailBspKind kind, int numPolys)
+    private BspReader(BspKind kind, int numPolys)
     {
         _kind = kind;
         _numPolys = numPolys;
@@ -59,12 +59,12 @@ internal sealed class RetailBsp
     /// against <paramref name="numPolys"/>.
     /// </summary>
     // retail: BSPTREE::UnPack (acclient.c:360685)
-    public static BspTree? UnpackTree(ref RetailDataReader r, RetailBspKind kind, Polygon[] polygons, int numPolys)
+    public static BspTree? UnPackTree(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys)
     {
         int at = r.Offset;
-        var bsp = new RetailBsp(kind, numPolys);
+        var bsp = new BspReader(kind, numPolys);
         int root = bsp.UnPackChild(ref r, 1);
-        if (kind == RetailBspKind.Drawing)
+        if (kind == BspKind.Drawing)
         {
             return null;
         }
@@ -141,10 +141,10 @@ internal sealed class RetailBsp
 
         Sphere sphere = default;
         int first = _polyIndices.Count, count = 0;
-        if (_kind != RetailBspKind.Cell)
+        if (_kind != BspKind.Cell)
         {
             sphere = Sphere.UnPack(ref r, "BSP node sphere");
-            if (_kind == RetailBspKind.Drawing)
+            if (_kind == BspKind.Drawing)
             {
                 count = ReadPolyList(ref r, r.ReadCount("BSP node polygon count", 2));
             }
@@ -166,7 +166,7 @@ internal sealed class RetailBsp
         bool solid = false;
         Sphere sphere = default;
         int first = _polyIndices.Count, count = 0;
-        if (_kind == RetailBspKind.Physics)
+        if (_kind == BspKind.Physics)
         {
             solid = r.ReadUInt32("BSP leaf solid") != 0;
             sphere = Sphere.UnPack(ref r, "BSP leaf sphere");
@@ -189,7 +189,7 @@ internal sealed class RetailBsp
         int neg = UnPackChild(ref r, depth + 1);
         Sphere sphere = default;
         int first = _polyIndices.Count, count = 0;
-        if (_kind == RetailBspKind.Drawing)
+        if (_kind == BspKind.Drawing)
         {
             sphere = Sphere.UnPack(ref r, "BSP portal sphere");
             uint numPolys = r.ReadUInt32("BSP portal polygon count");

@@ -8,7 +8,7 @@ namespace AcDream.Core.Physics.Data;
 /// array every <c>CPolygon</c> of the owner indexes by position. Normals and texture coordinates are read and dropped (the
 /// physics uses only positions).
 /// </summary>
-internal static class RetailVertexArray
+internal static class VertexArrayReader
 {
     /// <summary>Retail <c>VertexType</c> 1: the software vertex (<c>CSWVertex</c>), the only type the data holds.</summary>
     public const uint SoftwareVertexType = 1;
@@ -20,7 +20,7 @@ internal static class RetailVertexArray
     /// <remarks>Divergence (why): retail reads no vertex bytes for a type other than 1 and leaves the vertices uninitialised;
     /// the port refuses such an array unless it is empty (uninitialised memory is no geometry).</remarks>
     // retail: CVertexArray::UnPack (acclient.c:362801)
-    public static Vector3[] Unpack(ref RetailDataReader r)
+    public static Vector3[] UnPack(ref RetailDataReader r)
     {
         int typeAt = r.Offset;
         uint vertexType = r.ReadUInt32("vertex type");
@@ -34,7 +34,7 @@ internal static class RetailVertexArray
         var vertices = new Vector3[count];
         for (int i = 0; i < count; i++)
         {
-            vertices[i] = UnpackVertex(ref r);
+            vertices[i] = UnPackVertex(ref r);
         }
 
         return vertices;
@@ -42,7 +42,7 @@ internal static class RetailVertexArray
 
     /// <summary>One vertex: its id (unused: retail indexes by position), the uv count, position, normal, then the uvs.</summary>
     // retail: CSWVertex::UnPack (acclient.c:364860)
-    private static Vector3 UnpackVertex(ref RetailDataReader r)
+    private static Vector3 UnPackVertex(ref RetailDataReader r)
     {
         r.ReadUInt16("vertex id");
         int numUvs = r.ReadCount16("vertex uv count", 0);

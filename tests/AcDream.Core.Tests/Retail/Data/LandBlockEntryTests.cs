@@ -14,7 +14,7 @@ namespace AcDream.Core.Tests.Retail.Data;
 /// <c>CLandBlock::UnPack</c> (acclient.c:351520) with <c>CLandBlockStruct::UnPack</c> (acclient.c:354108), and
 /// <c>CLandBlockInfo::UnPack</c> (acclient.c:351048) with <c>CBldPortal::UnPack</c> (acclient.c:362498): a test per field group.
 /// </summary>
-public class RetailLandBlockTests
+public class LandBlockEntryTests
 {
     internal static (ushort[] Terrain, byte[] Height) Ramp()
     {
@@ -36,7 +36,7 @@ public class RetailLandBlockTests
         byte[] bytes = RetailEntries.LandBlock(0x8080FFFF, true, t, h);
         // 4 + 4 + 162 + 81 = 251, padded to 252.
         Assert.Equal(252, bytes.Length);
-        RetailLandBlock b = RetailLandBlock.Unpack(bytes);
+        LandBlockEntry b = LandBlockEntry.UnPack(bytes);
         Assert.Equal(0x8080FFFFu, b.Id);
         Assert.True(b.HasInfo);
         Assert.Equal(t, b.Terrain.ToArray());
@@ -47,7 +47,7 @@ public class RetailLandBlockTests
     public void LandBlock_ToLandBlock_UsesTheHeightTable()
     {
         (ushort[] t, byte[] h) = Ramp();
-        LandBlock lb = RetailLandBlock.Unpack(RetailEntries.LandBlock(0x8080FFFF, false, t, h)).ToLandBlock(SweepScene.MetreTable());
+        LandBlock lb = LandBlockEntry.UnPack(RetailEntries.LandBlock(0x8080FFFF, false, t, h)).ToLandBlock(SweepScene.MetreTable());
         // The metre table maps index i to i metres: vertex (8, 0) (index 72, height index 8) stands 8 m high.
         Assert.Equal(8f, lb.Vertices[72].Z);
     }
@@ -57,7 +57,7 @@ public class RetailLandBlockTests
     {
         (ushort[] t, byte[] h) = Ramp();
         byte[] bytes = RetailEntries.LandBlock(0x8080FFFF, false, t, h).AsSpan(0, 200).ToArray();
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailLandBlock.Unpack(bytes));
+        var e = Assert.Throws<RetailDataFormatException>(() => LandBlockEntry.UnPack(bytes));
         Assert.Equal("CLandBlockStruct", e.Structure);
         Assert.Equal(200, e.Offset);
     }
@@ -71,7 +71,7 @@ public class RetailLandBlockTests
     [Fact]
     public void Info_CellCount_AndObjects()
     {
-        RetailLandBlockInfo i = RetailLandBlockInfo.Unpack(Info());
+        LandBlockInfoEntry i = LandBlockInfoEntry.UnPack(Info());
         Assert.Equal(0x8080FFFEu, i.Id);
         Assert.Equal(2, i.NumCells);
         Assert.Equal(0x80800100u, i.CellId(0));
@@ -83,8 +83,8 @@ public class RetailLandBlockTests
     [Fact]
     public void Info_Buildings_TheirDoors_AndTheOddCountPadding()
     {
-        RetailLandBlockInfo i = RetailLandBlockInfo.Unpack(Info());
-        RetailBuilding b = i.Buildings[0];
+        LandBlockInfoEntry i = LandBlockInfoEntry.UnPack(Info());
+        BuildingInfo b = i.Buildings[0];
         Assert.Equal(0x01000777u, b.ModelId);
         Assert.Equal(3u, b.NumLeaves);
         Assert.Equal(2, b.Portals.Length);
@@ -99,12 +99,12 @@ public class RetailLandBlockTests
     [Fact]
     public void Info_RestrictionTable_WhenFlagged()
     {
-        RetailLandBlockInfo i = RetailLandBlockInfo.Unpack(Info());
+        LandBlockInfoEntry i = LandBlockInfoEntry.UnPack(Info());
         Assert.Equal(1, i.BuildingFlags);
         Assert.Equal(0x70000002u, i.RestrictionTable[0x80800100]);
         Assert.Equal(0x70000002u, i.GetRestrictionIid(0x80800100));
         Assert.Equal(0u, i.GetRestrictionIid(0x80800101));
-        Assert.Empty(RetailLandBlockInfo.Unpack(Info(restrictions: false)).RestrictionTable);
+        Assert.Empty(LandBlockInfoEntry.UnPack(Info(restrictions: false)).RestrictionTable);
     }
 
     [Fact]
@@ -112,7 +112,7 @@ public class RetailLandBlockTests
     {
         var w = new RetailDataWriter();
         w.UInt32(0x8080FFFE).UInt32(0).UInt32(1000);
-        var e = Assert.Throws<RetailDataFormatException>(() => RetailLandBlockInfo.Unpack(w.ToArray()));
+        var e = Assert.Throws<RetailDataFormatException>(() => LandBlockInfoEntry.UnPack(w.ToArray()));
         Assert.Equal("CLandBlockInfo", e.Structure);
         Assert.Contains("object count", e.Reason);
         Assert.Contains("1000", e.Reason);
