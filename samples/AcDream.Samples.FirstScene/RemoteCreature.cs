@@ -6,6 +6,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Samples.FirstScene;
 

@@ -5,6 +5,8 @@ using System.IO;
 using System.Linq;
 using System.Text;
 using AcDream.Core.Tests.Replay.Harness;
+using AcDream.Core.Physics.Motion.MoveTo;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Benchmarks.Report;
 

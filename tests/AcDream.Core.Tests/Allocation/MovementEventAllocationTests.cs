@@ -8,6 +8,8 @@ using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Data;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
+using AcDream.Core.Physics.Motion.MoveTo;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Allocation;
 

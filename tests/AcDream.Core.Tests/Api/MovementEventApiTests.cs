@@ -6,6 +6,7 @@ using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Retail.Motion;
 using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Api;
 

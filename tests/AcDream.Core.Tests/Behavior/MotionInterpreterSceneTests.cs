@@ -7,6 +7,7 @@ using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Behavior;
 

@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
+using AcDream.Core.Physics.Motion.MoveTo;
 
 namespace AcDream.Core.Physics.Managers;
 

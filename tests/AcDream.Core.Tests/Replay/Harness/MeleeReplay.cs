@@ -8,6 +8,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support.Shared;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 

@@ -10,6 +10,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support.Shared;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 

@@ -7,6 +7,7 @@ using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Retail.Motion;
 

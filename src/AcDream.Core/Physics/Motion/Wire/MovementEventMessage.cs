@@ -1,6 +1,6 @@
 using AcDream.Core.Physics.Spatial;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Motion.Wire;
 
 /// <summary>The kind of movement a MovementEvent carries: the first byte of its movement data, on which retail's
 /// <c>MovementManager::unpack_movement</c> switches. Types 6-9 are <see cref="MovementType"/>'s values; the wire's 0 is an
