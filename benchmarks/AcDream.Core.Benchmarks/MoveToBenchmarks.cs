@@ -56,7 +56,7 @@ public class MoveToBenchmarks
         PhysicsObj obj = _world.CreateObject(id);
         obj.Weenie = weenie;
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         parts.Radius = 0.5f;
         obj.PartArray = parts;
         obj.EnterWorld(at);

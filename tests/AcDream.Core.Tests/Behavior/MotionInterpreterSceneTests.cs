@@ -12,7 +12,7 @@ using AcDream.Core.Physics.Motion.Wire;
 namespace AcDream.Core.Tests.Behavior;
 
 // A player and a remote creature moved by the motion interpreter on flat ground (z = 20), the body moved by the
-// RetailSpeedMotionTable through the part array's root motion.
+// SpeedOnlyMotionPlayer through the part array's root motion.
 public class MotionInterpreterSceneTests
 {
     private static PhysicsWorld FlatWorld()
@@ -27,7 +27,7 @@ public class MotionInterpreterSceneTests
         PhysicsObj obj = world.CreateObject(id);
         obj.Weenie = weenie;
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         obj.PartArray = parts;
         uint cell = SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 4);
         Assert.True(obj.EnterWorld(new Position(cell, at)));
@@ -87,7 +87,7 @@ public class MotionInterpreterSceneTests
         world.Player = player;
         MovementManager mm = MovementManager.Of(player);
         MotionInterp mi = mm.GetOrCreateMotionInterpreter();
-        var table = (RetailSpeedMotionTable)player.PartArray!.MotionTable!;
+        var table = (SpeedOnlyMotionPlayer)player.PartArray!.MotionPlayer!;
         mm.DoMotion(MotionCommand.WalkForward, new MovementParameters());
         SweepScene.Run(world, 2);
 

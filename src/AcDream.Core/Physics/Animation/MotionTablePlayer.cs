@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Motion;
 namespace AcDream.Core.Physics.Animation;
 
 /// <summary>
-/// The retail motion table as an <see cref="IMotionTable"/>: a <see cref="Animation.MotionTable"/> played by its
+/// The retail motion table as an <see cref="IMotionPlayer"/>: a <see cref="Animation.MotionTable"/> played by its
 /// motion-table manager onto an <see cref="AnimSequence"/> (retail <c>CPartArray</c>'s <c>motion_table_manager</c> and
 /// <c>sequence</c>). The interpreter's motions reach <c>MotionTableManager::PerformMovement</c>, which asks
 /// <c>CMotionTable::GetObjectSequence</c> for the links and cycle and queues them on the sequence; a motion is done when
@@ -13,12 +13,12 @@ namespace AcDream.Core.Physics.Animation;
 /// </summary>
 /// <remarks>
 /// <see cref="Objects.Parts.AnimatedPartArray"/> owns one and plays its sequence (animations, root motion, hooks). Set on a
-/// <see cref="Objects.Parts.SimplePartArray"/> (<see cref="Objects.Parts.SimplePartArray.MotionTable"/>), only the
+/// <see cref="Objects.Parts.SimplePartArray"/> (<see cref="Objects.Parts.SimplePartArray.MotionPlayer"/>), only the
 /// sequence's <see cref="Velocity"/> and <see cref="Omega"/> move the body and its animations are not played, so motions
 /// waiting for animations never finish there: use it so only for a table whose motions queue none.
 /// Not shareable between objects (it holds one object's state); the <see cref="Animation.MotionTable"/> is.
 /// </remarks>
-public sealed class MotionTablePlayer : IMotionTable
+public sealed class MotionTablePlayer : IMotionPlayer
 {
     private readonly MotionTableManager _manager;
 

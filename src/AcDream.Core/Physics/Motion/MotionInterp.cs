@@ -11,7 +11,7 @@ namespace AcDream.Core.Physics.Motion;
 /// motion the object performs, decides jumps and their launch velocity, and reacts to landing and leaving the ground.
 /// It keeps two states: <see cref="RawState"/> (the commands as given) and <see cref="InterpretedState"/> (after the
 /// hold-key, backwards, side-step and turn conversions), and sends the interpreted motion to the part array's motion table
-/// (<see cref="Objects.Parts.IPartArray.MotionTable"/>), which moves the body.
+/// (<see cref="Objects.Parts.IPartArray.MotionPlayer"/>), which moves the body.
 /// </summary>
 /// <remarks>
 /// <para>Created by <see cref="MovementManager"/>. The player's commands go in through <see cref="DoMotion"/> /

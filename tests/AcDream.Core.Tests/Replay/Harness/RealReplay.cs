@@ -237,7 +237,7 @@ public static class RealReplay
         PhysicsObj obj = world.CreateObject(guid);
         obj.Weenie = RemoteCreatureWeenie.Player;
         SimplePartArray parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         obj.PartArray = parts;
         obj.EnterWorld(first.Position);
         var message = new MovementEventMessage();

@@ -179,7 +179,7 @@ public class MotionInterpVelocityTests
     {
         // CPartArray::DoInterpretedMotion returns 7 without a motion-table manager: nothing is queued or recorded.
         var (obj, mm, mi, _) = MotionFixture.Create(new PlayerWeenie());
-        ((AcDream.Core.Physics.Objects.Parts.SimplePartArray)obj.PartArray!).MotionTable = null;
+        ((AcDream.Core.Physics.Objects.Parts.SimplePartArray)obj.PartArray!).MotionPlayer = null;
         Assert.Equal(MotionError.NoMotionTable, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params()));
         Assert.Equal(MotionCommand.Ready, mi.InterpretedState.ForwardCommand);
         Assert.Equal(MotionCommand.Ready, mi.RawState.ForwardCommand);
