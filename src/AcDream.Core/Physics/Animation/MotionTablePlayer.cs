@@ -70,16 +70,16 @@ public sealed class MotionTablePlayer : IMotionPlayer
     /// <inheritdoc />
     // retail: CPartArray::DoInterpretedMotion (acclient.c:326017)
     public MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p) =>
-        _manager.PerformMovement(2, (uint)motion, p.Speed, Sequence);
+        _manager.PerformMovement(MovementType.InterpretedCommand, (uint)motion, p.Speed, Sequence);
 
     /// <inheritdoc />
     // retail: CPartArray::StopInterpretedMotion (acclient.c:326053)
     public MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p) =>
-        _manager.PerformMovement(4, (uint)motion, p.Speed, Sequence);
+        _manager.PerformMovement(MovementType.StopInterpretedCommand, (uint)motion, p.Speed, Sequence);
 
     /// <inheritdoc />
     // retail: CPartArray::StopCompletelyInternal (acclient.c:326089)
-    public MotionError StopCompletely() => _manager.PerformMovement(5, 0, 1f, Sequence);
+    public MotionError StopCompletely() => _manager.PerformMovement(MovementType.StopCompletely, 0, 1f, Sequence);
 
     /// <inheritdoc />
     // retail: CPartArray::InitializeMotionTables (acclient.c:325067)
