@@ -59,7 +59,7 @@ public class MotionInterpBenchmarks
 
     /// <summary>get_state_velocity.</summary>
     [Benchmark]
-    public Vector3 StateVelocity() => _mi.GetStateVelocity();
+    public Vector3 StateVelocity() => _mi.StateVelocity;
 
     /// <summary>One 30 Hz world tick of the running, turning player.</summary>
     [Benchmark]

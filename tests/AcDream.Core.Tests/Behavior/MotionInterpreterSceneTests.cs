@@ -128,7 +128,7 @@ public class MotionInterpreterSceneTests
         Assert.True(MovementEvent.ApplyInterpretedMotion(remote, state));
         MotionInterp mi = MovementManager.Of(remote).GetOrCreateMotionInterpreter();
         Assert.Equal(2.8256f, mi.MyRunRate);   // apply_interpreted_movement takes the run's speed as the run rate
-        Assert.Equal(new Vector3(0f, 4f * 2.8256f, 0f), mi.GetStateVelocity());
+        Assert.Equal(new Vector3(0f, 4f * 2.8256f, 0f), mi.StateVelocity);
 
         SweepScene.Run(world, 2);
         float y0 = remote.Position.Frame.Origin.Y;

@@ -106,7 +106,7 @@ public sealed class StickyManager
         IMotionInterpreter? minterp = obj.GetOrCreateMotionInterpreter();
         if (minterp is not null)
         {
-            speed = minterp.GetMaxSpeed() * SpeedMultiplier;
+            speed = minterp.MaxSpeed * SpeedMultiplier;
         }
 
         if (speed < PhysicsGlobals.Epsilon)

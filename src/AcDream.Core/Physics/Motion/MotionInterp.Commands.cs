@@ -54,7 +54,7 @@ public sealed partial class MotionInterp
             }
         }
 
-        if (((uint)motion & (uint)MotionCommandClass.Action) != 0 && InterpretedState.GetNumActions() >= 6)
+        if (((uint)motion & (uint)MotionCommandClass.Action) != 0 && InterpretedState.Actions.Count >= 6)
         {
             return MotionError.TooManyActions;
         }

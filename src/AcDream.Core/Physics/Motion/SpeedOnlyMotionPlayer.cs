@@ -7,7 +7,7 @@ namespace AcDream.Core.Physics.Motion;
 /// tables: not retail's table or its player, only the locomotion cycles and modifiers of a humanoid at retail's own speeds,
 /// with no animations (every motion completes at once). Walk forward 3.12 m/s, run forward 4 m/s, side-step
 /// 1.25 m/s and turn 1.5 rad/s, each times its speed, so the body moves exactly as fast as the interpreter's
-/// <see cref="MotionInterp.GetStateVelocity"/> says.
+/// <see cref="MotionInterp.StateVelocity"/> says.
 /// </summary>
 /// <remarks>
 /// <para>What is retail: the velocity and omega arithmetic of <c>add_motion</c> and <c>combine_motion</c>
