@@ -32,7 +32,7 @@ public class MotionInterpBenchmarks
         _player = _world.CreateObject(1);
         _player.Weenie = new PlayerWeenie { RunSkill = 200, JumpSkill = 200 };
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         _player.PartArray = parts;
         _player.EnterWorld(new Position(SyntheticTerrain.CellId(0x80, 0x80, 4, 4), new Vector3(96f, 90f, 20f)));
         _world.Player = _player;
@@ -59,7 +59,7 @@ public class MotionInterpBenchmarks
 
     /// <summary>get_state_velocity.</summary>
     [Benchmark]
-    public Vector3 StateVelocity() => _mi.GetStateVelocity();
+    public Vector3 StateVelocity() => _mi.StateVelocity;
 
     /// <summary>One 30 Hz world tick of the running, turning player.</summary>
     [Benchmark]

@@ -6,6 +6,7 @@ using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support.Shared;
 using BenchmarkDotNet.Attributes;
+using AcDream.Core.Physics.Motion.MoveTo;
 
 namespace AcDream.Core.Benchmarks;
 
@@ -55,7 +56,7 @@ public class MoveToBenchmarks
         PhysicsObj obj = _world.CreateObject(id);
         obj.Weenie = weenie;
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         parts.Radius = 0.5f;
         obj.PartArray = parts;
         obj.EnterWorld(at);

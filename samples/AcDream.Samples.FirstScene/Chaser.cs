@@ -32,7 +32,7 @@ internal sealed class Chaser
         ArgumentNullException.ThrowIfNull(world);
         _player = player;
         Obj = world.CreateObject(0x80000C01);
-        Obj.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
+        Obj.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionPlayer = new SpeedOnlyMotionPlayer() };
         Obj.Weenie = RemoteCreatureWeenie.Creature;
         if (!Obj.EnterWorld(Scene.OnGround(terrain, 125f, 60f, heading: 270f)))
         {

@@ -88,7 +88,7 @@ public static class Program
         // data-file entry (0x09000001 for a human) from its own dat reader; the sample writes a humanoid table's bytes
         // (HumanoidMotionTable, the walk, run, side-step and turn speeds of the human table). AnimatedPartArray plays it
         // through retail's MotionTableManager and CSequence. A client without motion tables uses
-        // new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() }, which moves the same.
+        // new SimplePartArray(SetupPhysics.Human) { MotionPlayer = new SpeedOnlyMotionPlayer() }, which moves the same.
         MotionTable humanTable = MotionTable.UnPack(HumanoidMotionTable.Bytes());
         var body = new AnimatedPartArray(SetupPhysics.Human, numParts: 1, humanTable, animations: null);
         player.PartArray = body;

@@ -6,6 +6,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Samples.FirstScene;
 
@@ -52,7 +53,7 @@ internal sealed class RemoteCreature
                 // motion table, its weenie (a creature: its motion arrives interpreted), then the first position through
                 // EnterWorld, then the MovementEvent the server sends with it.
                 Obj = _world.CreateObject(0x80000010);
-                var body = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
+                var body = new SimplePartArray(SetupPhysics.Human) { MotionPlayer = new SpeedOnlyMotionPlayer() };
                 Obj.PartArray = body;
                 Obj.Weenie = RemoteCreatureWeenie.Creature;
                 if (!Obj.EnterWorld(report))
@@ -78,7 +79,7 @@ internal sealed class RemoteCreature
         ForwardCommand = MotionCommand.WalkForward,
         ForwardSpeed = 1f,
         TurnCommand = MotionCommand.TurnRight,
-        TurnSpeed = -(float)(WalkSpeed / Radius / RetailSpeedMotionTable.TurnAnimSpeed),
+        TurnSpeed = -(float)(WalkSpeed / Radius / SpeedOnlyMotionPlayer.TurnAnimSpeed),
     };
 
     /// <summary>Distance, metres, from the creature to where the server has it at <paramref name="now"/>.</summary>

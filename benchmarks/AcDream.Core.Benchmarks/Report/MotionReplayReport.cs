@@ -5,6 +5,8 @@ using System.IO;
 using System.Linq;
 using System.Text;
 using AcDream.Core.Tests.Replay.Harness;
+using AcDream.Core.Physics.Motion.MoveTo;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Benchmarks.Report;
 
@@ -68,7 +70,7 @@ internal static class MotionReplayReport
         md.AppendLine("the `MoveToManager`; the players here receive types 0 and 8). The objects those events turn to (type 8) or stick to");
         md.AppendLine("(type 0, motion flag 0x01) are in the world under their own UpdatePositions when the recording has them (created at");
         md.AppendLine("their first); a target without any (a static: +Brenwick's 0x79DAF0xx) is unknown, and the entry point does what retail");
-        md.AppendLine("does then: it turns to the event's heading (0 in every such event). The body uses the stand-in `RetailSpeedMotionTable`");
+        md.AppendLine("does then: it turns to the event's heading (0 in every such event). The body uses the stand-in `SpeedOnlyMotionPlayer`");
         md.AppendLine("and one sphere with no cylinder radius. Three runs: all events; \"type 0 only\" (types 6-9 dropped, the rest as all");
         md.AppendLine("events: the comparison that shows what types 6-9 add); interpolation only (no MovementEvent).");
         md.AppendLine("After each tick, every pose the player's own client");
@@ -162,7 +164,7 @@ internal static class MotionReplayReport
         md.AppendLine("motion interpreter and the `MoveToManager`), in a `PhysicsWorld` at 30 Hz on level ground. The player is the world's player");
         md.AppendLine("(its weenie `IsThePlayer`, its own UpdatePositions not applied, its run rate the events'); before each MoveToObject its body");
         md.AppendLine("is placed at its own client's last pose (each approach starts where retail's did). The Chicken and The Chicken are remote");
-        md.AppendLine("objects under their UpdatePositions (0xF748) and MovementEvents; every object uses the stand-in `RetailSpeedMotionTable`.");
+        md.AppendLine("objects under their UpdatePositions (0xF748) and MovementEvents; every object uses the stand-in `SpeedOnlyMotionPlayer`.");
         md.AppendLine("\"MoveTo ignored\": events of types 6-9 are dropped (type 0 still applies); \"interpolation only\": no MovementEvent at all.");
         md.AppendLine();
         md.AppendLine("**The player's approaches.** Error: horizontal distance from the body to each pose the player's own client sent (C2S");

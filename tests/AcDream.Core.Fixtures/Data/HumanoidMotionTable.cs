@@ -6,7 +6,7 @@ namespace AcDream.Core.Fixtures.Data;
 /// <summary>
 /// A humanoid-like motion table's bytes (type 0x09), for driving a player through the real table path: the NonCombat style
 /// (default substate Ready) with the Ready, WalkForward and RunForward cycles carrying the velocities the stand-in
-/// <c>RetailSpeedMotionTable</c> uses (walk 3.12 m/s, run 4 m/s forward), and the style-wide SideStepRight (1.25 m/s to the
+/// <c>SpeedOnlyMotionPlayer</c> uses (walk 3.12 m/s, run 4 m/s forward), and the style-wide SideStepRight (1.25 m/s to the
 /// right) and TurnRight (1.5 rad/s clockwise: omega z = −1.5) modifiers. Each cycle plays one animation at framerate 0 (a
 /// held pose), so the sequence moves the body by velocity and omega over the whole quantum, as the stand-in does
 /// (<c>CSequence::update_internal</c>, acclient.c:339892, applies physics over the quantum when no frame is crossed).

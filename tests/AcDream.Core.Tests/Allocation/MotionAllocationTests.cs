@@ -6,6 +6,7 @@ using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Allocation;
 
@@ -21,14 +22,14 @@ public class MotionAllocationTests
         PhysicsObj player = world.CreateObject(1);
         player.Weenie = new PlayerWeenie { RunSkill = 200, JumpSkill = 200 };
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         player.PartArray = parts;
         Assert.True(player.EnterWorld(new Position(cell, new Vector3(96f, 90f, 20f))));
         world.Player = player;
         PhysicsObj remote = world.CreateObject(2);
         remote.Weenie = RemoteCreatureWeenie.Player;
         var rparts = Walkers.OneSphere();
-        rparts.MotionTable = new RetailSpeedMotionTable();
+        rparts.MotionPlayer = new SpeedOnlyMotionPlayer();
         remote.PartArray = rparts;
         Assert.True(remote.EnterWorld(new Position(cell, new Vector3(90f, 90f, 20f))));
 

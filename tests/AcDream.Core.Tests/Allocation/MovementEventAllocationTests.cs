@@ -8,6 +8,8 @@ using AcDream.Core.Tests.Retail.Motion;
 using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
+using AcDream.Core.Physics.Motion.MoveTo;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Allocation;
 
@@ -22,7 +24,7 @@ public class MovementEventAllocationTests
         PhysicsObj obj = world.CreateObject(MovementEventBytes.ObjectId);
         obj.Weenie = RemoteCreatureWeenie.Creature;
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         obj.PartArray = parts;
         Assert.True(obj.EnterWorld(new Position(0xA9B40001u, new Vector3(50f, 50f, 0f))));
         // The bodies: run forward (type 0), and a MoveToPosition 5 m north (type 7, retail's default parameters).

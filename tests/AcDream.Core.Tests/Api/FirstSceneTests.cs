@@ -97,7 +97,7 @@ public sealed class FirstSceneTests
         TerrainWorld terrain = Flat();
         var world = new PhysicsWorld(terrain);
         PhysicsObj player = world.CreateObject(1);
-        player.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
+        player.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionPlayer = new SpeedOnlyMotionPlayer() };
         Assert.True(player.EnterWorld(Spawn(terrain)));
         world.Player = player;
         for (int k = 1; k <= 20; k++)

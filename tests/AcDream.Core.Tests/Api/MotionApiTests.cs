@@ -2,6 +2,7 @@ using System;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Tests.Support;
 using Xunit;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Api;
 

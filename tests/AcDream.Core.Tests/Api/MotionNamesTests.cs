@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.World;
 using Xunit;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Api;
 

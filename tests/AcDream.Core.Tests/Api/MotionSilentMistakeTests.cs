@@ -79,7 +79,7 @@ public sealed class MotionSilentMistakeTests
         Assert.Equal(ObjectSetupIssues.NoMotionTable, without.SetupIssues);
 
         PhysicsObj with = world.CreateObject(2);
-        with.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
+        with.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionPlayer = new SpeedOnlyMotionPlayer() };
         Assert.True(with.EnterWorld(SyntheticTerrain.OnGround(terrain, SyntheticTerrain.CellId(0x80, 0x80, 4, 4), 110f, 100f)));
         with.GetOrCreateMotionInterpreter();
         Assert.Equal(ObjectSetupIssues.None, with.SetupIssues);

@@ -7,6 +7,7 @@ using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Retail.Motion;
 using Xunit;
 using AcDream.Core.Physics.Format;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Api;
 

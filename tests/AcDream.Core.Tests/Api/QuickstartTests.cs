@@ -23,7 +23,7 @@ public sealed class QuickstartTests
     {
         var (player, top) = Quickstart();
 
-        // Walk: WalkForward plays at retail's 3.12 m/s (RetailSpeedMotionTable; get_state_velocity's walk speed) for the
+        // Walk: WalkForward plays at retail's 3.12 m/s (SpeedOnlyMotionPlayer; get_state_velocity's walk speed) for the
         // simulated time of the first 60 frames. The world steps its objects when at least 1/30 s has passed since its last
         // step (CPhysics::UseTime), so the last step before t = 1 s lies within 1/30 s of it (a summed frame time can fall an
         // ulp short of the gate): 29/30 to 1 s of walking, y in 100 + 3.12 * [0.9667, 1] = [103.016, 103.12].
@@ -58,7 +58,7 @@ public sealed class QuickstartTests
 
         var world = new PhysicsWorld(terrain);                  // over terrain: the retail collision sweep
         PhysicsObj player = world.CreateObject(0x50000001);
-        var body = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
+        var body = new SimplePartArray(SetupPhysics.Human) { MotionPlayer = new SpeedOnlyMotionPlayer() };
         player.PartArray = body;                                // the human Setup's shape; retail's walk/run/turn speeds
         player.Weenie = new PlayerWeenie { RunSkill = 200, JumpSkill = 100, Strength = 100 };
         var spawn = new Vector3(100f, 100f, 0f);                // landblock-local metres; its outdoor cell is 0xA9B40025

@@ -7,11 +7,12 @@ using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Behavior;
 
 // A player and a remote creature moved by the motion interpreter on flat ground (z = 20), the body moved by the
-// RetailSpeedMotionTable through the part array's root motion.
+// SpeedOnlyMotionPlayer through the part array's root motion.
 public class MotionInterpreterSceneTests
 {
     private static PhysicsWorld FlatWorld()
@@ -26,7 +27,7 @@ public class MotionInterpreterSceneTests
         PhysicsObj obj = world.CreateObject(id);
         obj.Weenie = weenie;
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         obj.PartArray = parts;
         uint cell = SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 4);
         Assert.True(obj.EnterWorld(new Position(cell, at)));
@@ -86,7 +87,7 @@ public class MotionInterpreterSceneTests
         world.Player = player;
         MovementManager mm = MovementManager.Of(player);
         MotionInterp mi = mm.GetOrCreateMotionInterpreter();
-        var table = (RetailSpeedMotionTable)player.PartArray!.MotionTable!;
+        var table = (SpeedOnlyMotionPlayer)player.PartArray!.MotionPlayer!;
         mm.DoMotion(MotionCommand.WalkForward, new MovementParameters());
         SweepScene.Run(world, 2);
 
@@ -127,7 +128,7 @@ public class MotionInterpreterSceneTests
         Assert.True(MovementEvent.ApplyInterpretedMotion(remote, state));
         MotionInterp mi = MovementManager.Of(remote).GetOrCreateMotionInterpreter();
         Assert.Equal(2.8256f, mi.MyRunRate);   // apply_interpreted_movement takes the run's speed as the run rate
-        Assert.Equal(new Vector3(0f, 4f * 2.8256f, 0f), mi.GetStateVelocity());
+        Assert.Equal(new Vector3(0f, 4f * 2.8256f, 0f), mi.StateVelocity);
 
         SweepScene.Run(world, 2);
         float y0 = remote.Position.Frame.Origin.Y;

@@ -6,6 +6,7 @@ using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 using Xunit;
+using AcDream.Core.Physics.Motion.MoveTo;
 
 namespace AcDream.Core.Tests.Behavior;
 

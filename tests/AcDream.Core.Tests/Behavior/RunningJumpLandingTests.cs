@@ -30,7 +30,7 @@ public class RunningJumpLandingTests
         PhysicsObj obj = world.CreateObject(1);
         obj.Weenie = new PlayerWeenie { RunSkill = 200, JumpSkill = 100 };
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         obj.PartArray = parts;
         Assert.True(obj.EnterWorld(new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 1), new Vector3(100f, 30f, 20f))));
         world.Player = obj;

@@ -16,7 +16,7 @@ namespace AcDream.Core.Tests.Behavior;
 // the motion table reports the motion done (MotionDone, 343640, from CheckForCompletedMotions). With a real table, standing
 // up from sitting (DoMotion(Ready) while the forward command is Sitting: node error 0x48) is unfinished until the stand-up
 // link animation ends, so a jump is refused (0x48) for that whole time; and DoMotion refuses a seventh action while six
-// are queued (TooManyActions 0x45, CMotionInterp::DoMotion). The stand-in (RetailSpeedMotionTable) completes every motion
+// are queued (TooManyActions 0x45, CMotionInterp::DoMotion). The stand-in (SpeedOnlyMotionPlayer) completes every motion
 // at once, so both last only until the next tick's CheckForCompletedMotions. These tests pin the stand-in's behaviour;
 // with the real motion table the jump right after standing up and the action after six must be refused for the length
 // of the animations. (MovementManager::PerformMovement takes the finished motions right after each command, so with the
@@ -31,7 +31,7 @@ public class StandInInstantCompletionTests
         PhysicsObj obj = world.CreateObject(1);
         obj.Weenie = new PlayerWeenie { JumpSkill = 100 };
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         obj.PartArray = parts;
         Assert.True(obj.EnterWorld(new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 4), new Vector3(100f, 100f, 20f))));
         world.Player = obj;

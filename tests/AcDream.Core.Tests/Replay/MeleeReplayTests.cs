@@ -8,6 +8,7 @@ using AcDream.Core.Tests.Replay.Harness;
 using AcDream.Core.Tests.Support;
 using Xunit;
 using Xunit.Abstractions;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Replay;
 
@@ -155,7 +156,7 @@ public class MeleeReplayTests(ITestOutputHelper output)
         MovementEventDecoder.Decode(rec.PlayerMoveToObjects()[0].Body, m);
         double tick = MotionInterp.RunAnimSpeed * m.RunRate * m.Parameters.Speed * MeleeReplay.Dt;
         // (2) The glide retail's client plays after a run stops (the run-to-ready link animation moves it on), which the
-        // stand-in motion table (RetailSpeedMotionTable) does not: measured on first-login-walk-jump, the same retail
+        // stand-in motion table (SpeedOnlyMotionPlayer) does not: measured on first-login-walk-jump, the same retail
         // client's stop pose to its pose 1 s later (0.7884 m, both runs).
         double glide = StopGlide(Dir);
         double bound = glide + tick;

@@ -7,6 +7,7 @@ using AcDream.Core.Tests.Replay.Harness;
 using AcDream.Core.Tests.Support;
 using Xunit;
 using Xunit.Abstractions;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Replay;
 

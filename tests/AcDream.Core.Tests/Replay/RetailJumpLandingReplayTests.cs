@@ -101,7 +101,7 @@ public class RetailJumpLandingReplayTests
         PhysicsObj p = world.CreateObject(1);
         p.Weenie = new RecordedJumpWeenie(jumps[0].Velocity.Z);
         var pa = Walkers.OneSphere(0.48f, 0.6f, 1.5f);
-        pa.MotionTable = new RetailSpeedMotionTable();
+        pa.MotionPlayer = new SpeedOnlyMotionPlayer();
         p.PartArray = pa;
         Assert.True(p.EnterWorld(new Position(SweepScene.CellId(SweepScene.BlockX, SweepScene.BlockY, 4, 4), new Vector3(100f, 100f, 20f))));
         world.Player = p;

@@ -140,8 +140,8 @@ public class ObjectTickConstantsTests
         Assert.NotNull(minterp);
         Assert.IsType<AcDream.Core.Physics.Motion.MovementManager>(obj.Movement);
         Assert.IsType<AcDream.Core.Physics.Motion.MotionInterp>(minterp);
-        Assert.Equal(4.0, minterp!.GetMaxSpeed());
-        Assert.Equal(4.0, minterp.GetAdjustedMaxSpeed());
+        Assert.Equal(4.0, minterp!.MaxSpeed);
+        Assert.Equal(4.0, minterp.AdjustedMaxSpeed);
         Assert.Equal(4.0, BasicMovementManager.NoWeenieMaxSpeed);
         Assert.True(obj.IsActive);
         Assert.Equal(3.0, obj.UpdateTime);

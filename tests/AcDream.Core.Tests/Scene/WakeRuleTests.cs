@@ -13,6 +13,7 @@ using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 using Xunit;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Scene;
 

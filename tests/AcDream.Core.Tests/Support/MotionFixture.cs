@@ -42,14 +42,14 @@ internal static class MotionFixture
 {
     /// <summary>Creates the object; <paramref name="gravity"/> false clears GRAVITY so every motion may start
     /// (contact_allows_move), true keeps retail's default state (then the object is in the air until placed).</summary>
-    public static (PhysicsObj Obj, MovementManager Mm, MotionInterp Mi, RetailSpeedMotionTable Table) Create(
+    public static (PhysicsObj Obj, MovementManager Mm, MotionInterp Mi, SpeedOnlyMotionPlayer Table) Create(
         IMotionWeenie? weenie, bool gravity = false)
     {
         var world = new PhysicsWorld(0.0);
         PhysicsObj obj = world.CreateObject(1);
         obj.Weenie = weenie;
-        var table = new RetailSpeedMotionTable();
-        obj.PartArray = new SimplePartArray(1, 0) { MotionTable = table };
+        var table = new SpeedOnlyMotionPlayer();
+        obj.PartArray = new SimplePartArray(1, 0) { MotionPlayer = table };
         if (!gravity)
         {
             obj.SetState((PhysicsState)PhysicsGlobals.DefaultState & ~PhysicsState.Gravity);

@@ -41,7 +41,7 @@ internal static class MoveToScene
         PhysicsObj obj = world.CreateObject(id);
         obj.Weenie = weenie;
         var parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         parts.Radius = radius;
         obj.PartArray = parts;
         Assert.True(obj.EnterWorld(new Position(Cell, at)));

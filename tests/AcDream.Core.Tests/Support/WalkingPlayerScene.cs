@@ -9,7 +9,7 @@ using AcDream.Core.Physics.World;
 namespace AcDream.Core.Tests.Support;
 
 /// <summary>A player from the human Setup on flat landblocks at 0 m (0xA9B4 and its northern neighbour 0xA9B5), with retail's
-/// speed table: WalkForward moves it 3.12 m/s north (RetailSpeedMotionTable, get_state_velocity's walk speed).</summary>
+/// speed table: WalkForward moves it 3.12 m/s north (SpeedOnlyMotionPlayer, get_state_velocity's walk speed).</summary>
 internal sealed class WalkingPlayerScene
 {
     /// <summary>Retail's walk speed, m/s, as the float the motion table carries.</summary>
@@ -28,7 +28,7 @@ internal sealed class WalkingPlayerScene
         Terrain.AddLandBlock(0xA9B5FFFF, new byte[81], new ushort[81]);
         World = new PhysicsWorld(Terrain);
         Player = World.CreateObject(0x50000001);
-        Player.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionTable = new RetailSpeedMotionTable() };
+        Player.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionPlayer = new SpeedOnlyMotionPlayer() };
         Player.Weenie = weenie ?? new PlayerWeenie { RunSkill = 200, JumpSkill = 100, Strength = 100 };
         var p = new Position(LandDefs.OutdoorCellId(0xA9B4FFFF, start.X, start.Y), Frame.FromHeading(start, heading));
         if (!Player.EnterWorld(p))

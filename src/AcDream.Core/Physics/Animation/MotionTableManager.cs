@@ -308,12 +308,13 @@ internal sealed class MotionTableManager
         RemoveRedundantLinks(seq);
     }
 
-    /// <summary>Plays (<paramref name="type"/> 2), stops (4) or stops everything (5) through the table and queues the result.
-    /// </summary>
+    /// <summary>Plays (<paramref name="type"/> <see cref="MovementType.InterpretedCommand"/>, 2), stops
+    /// (<see cref="MovementType.StopInterpretedCommand"/>, 4) or stops everything (<see cref="MovementType.StopCompletely"/>, 5)
+    /// through the table and queues the result.</summary>
     /// <returns><see cref="MotionError.NoMotionTable"/> (7) without a table; <see cref="MotionError.NoMotionTableData"/>
     /// (0x43) when the table has nothing for the motion; else <see cref="MotionError.None"/>.</returns>
     // retail: MotionTableManager::PerformMovement (acclient.c:330205)
-    public MotionError PerformMovement(int type, uint motion, float speed, AnimSequence seq)
+    public MotionError PerformMovement(MovementType type, uint motion, float speed, AnimSequence seq)
     {
         MotionTable? table = Table;
         if (table is null)
@@ -324,7 +325,7 @@ internal sealed class MotionTableManager
         uint numAnims;
         switch (type)
         {
-            case 2:
+            case MovementType.InterpretedCommand:
                 if (table.DoObjectMotion(motion, State, seq, speed, out numAnims))
                 {
                     AddToQueue(motion, numAnims, seq);
@@ -332,7 +333,7 @@ internal sealed class MotionTableManager
                 }
 
                 return MotionError.NoMotionTableData;
-            case 4:
+            case MovementType.StopInterpretedCommand:
                 if (table.StopObjectMotion(motion, speed, State, seq, out numAnims))
                 {
                     AddToQueue(0x41000003u, numAnims, seq);
@@ -340,7 +341,7 @@ internal sealed class MotionTableManager
                 }
 
                 return MotionError.NoMotionTableData;
-            case 5:
+            case MovementType.StopCompletely:
                 table.StopObjectCompletely(State, seq, out numAnims);
                 AddToQueue(0x41000003u, numAnims, seq);
                 return MotionError.None;

@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Motion;
 namespace AcDream.Core.Physics.Animation;
 
 /// <summary>
-/// The retail motion table as an <see cref="IMotionTable"/>: a <see cref="Animation.MotionTable"/> played by its
+/// The retail motion table as an <see cref="IMotionPlayer"/>: a <see cref="Animation.MotionTable"/> played by its
 /// motion-table manager onto an <see cref="AnimSequence"/> (retail <c>CPartArray</c>'s <c>motion_table_manager</c> and
 /// <c>sequence</c>). The interpreter's motions reach <c>MotionTableManager::PerformMovement</c>, which asks
 /// <c>CMotionTable::GetObjectSequence</c> for the links and cycle and queues them on the sequence; a motion is done when
@@ -13,12 +13,12 @@ namespace AcDream.Core.Physics.Animation;
 /// </summary>
 /// <remarks>
 /// <see cref="Objects.Parts.AnimatedPartArray"/> owns one and plays its sequence (animations, root motion, hooks). Set on a
-/// <see cref="Objects.Parts.SimplePartArray"/> (<see cref="Objects.Parts.SimplePartArray.MotionTable"/>), only the
+/// <see cref="Objects.Parts.SimplePartArray"/> (<see cref="Objects.Parts.SimplePartArray.MotionPlayer"/>), only the
 /// sequence's <see cref="Velocity"/> and <see cref="Omega"/> move the body and its animations are not played, so motions
 /// waiting for animations never finish there: use it so only for a table whose motions queue none.
 /// Not shareable between objects (it holds one object's state); the <see cref="Animation.MotionTable"/> is.
 /// </remarks>
-public sealed class MotionTablePlayer : IMotionTable
+public sealed class MotionTablePlayer : IMotionPlayer
 {
     private readonly MotionTableManager _manager;
 
@@ -70,16 +70,16 @@ public sealed class MotionTablePlayer : IMotionTable
     /// <inheritdoc />
     // retail: CPartArray::DoInterpretedMotion (acclient.c:326017)
     public MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p) =>
-        _manager.PerformMovement(2, (uint)motion, p.Speed, Sequence);
+        _manager.PerformMovement(MovementType.InterpretedCommand, (uint)motion, p.Speed, Sequence);
 
     /// <inheritdoc />
     // retail: CPartArray::StopInterpretedMotion (acclient.c:326053)
     public MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p) =>
-        _manager.PerformMovement(4, (uint)motion, p.Speed, Sequence);
+        _manager.PerformMovement(MovementType.StopInterpretedCommand, (uint)motion, p.Speed, Sequence);
 
     /// <inheritdoc />
     // retail: CPartArray::StopCompletelyInternal (acclient.c:326089)
-    public MotionError StopCompletely() => _manager.PerformMovement(5, 0, 1f, Sequence);
+    public MotionError StopCompletely() => _manager.PerformMovement(MovementType.StopCompletely, 0, 1f, Sequence);
 
     /// <inheritdoc />
     // retail: CPartArray::InitializeMotionTables (acclient.c:325067)

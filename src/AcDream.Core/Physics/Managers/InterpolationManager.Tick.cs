@@ -56,7 +56,7 @@ public sealed partial class InterpolationManager
         IMotionInterpreter? minterp = obj.GetOrCreateMotionInterpreter();
         if (minterp is not null)
         {
-            double s = UseAdjustedSpeed ? minterp.GetAdjustedMaxSpeed() : minterp.GetMaxSpeed();
+            double s = UseAdjustedSpeed ? minterp.AdjustedMaxSpeed : minterp.MaxSpeed;
             myMaxSpeed = (float)(s * SpeedMultiplier);
         }
 

@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
+using AcDream.Core.Physics.Motion.MoveTo;
 
 namespace AcDream.Core.Physics.Managers;
 
@@ -105,7 +106,7 @@ public sealed class StickyManager
         IMotionInterpreter? minterp = obj.GetOrCreateMotionInterpreter();
         if (minterp is not null)
         {
-            speed = minterp.GetMaxSpeed() * SpeedMultiplier;
+            speed = minterp.MaxSpeed * SpeedMultiplier;
         }
 
         if (speed < PhysicsGlobals.Epsilon)

@@ -34,7 +34,8 @@ public sealed class ActionList
     private readonly ActionNode[] _nodes = new ActionNode[Capacity];
     private int _head;
 
-    /// <summary>Number of queued actions (retail <c>GetNumActions</c>).</summary>
+    /// <summary>Number of queued actions (retail <c>InterpretedMotionState::GetNumActions</c>, the count of the list).</summary>
+    // retail: InterpretedMotionState::GetNumActions (acclient.c:332814)
     public int Count { get; private set; }
 
     /// <summary>The action at queue position <paramref name="i"/> (0 = oldest).</summary>

@@ -54,7 +54,8 @@ public sealed class InterpretedMotionState
 
     private float _turnSpeed;
 
-    /// <summary>The queued actions.</summary>
+    /// <summary>The queued actions; their number, <see cref="ActionList.Count"/>, is retail's
+    /// <c>InterpretedMotionState::GetNumActions</c>.</summary>
     public ActionList Actions { get; } = new();
 
     /// <summary>Puts the state back to its constructed default (and empties the actions).</summary>
@@ -161,10 +162,6 @@ public sealed class InterpretedMotionState
     /// <summary>Removes the oldest action and returns its command (<see cref="MotionCommand.None"/> when none).</summary>
     // retail: InterpretedMotionState::RemoveAction (acclient.c:332788)
     public MotionCommand RemoveAction() => Actions.RemoveFirst();
-
-    /// <summary>Number of queued actions.</summary>
-    // retail: InterpretedMotionState::GetNumActions (acclient.c:332814)
-    public int GetNumActions() => Actions.Count;
 
     /// <summary>The state's commands by name (an unnamed one as its hex id), their speeds and the number of queued actions.</summary>
     public override string ToString() => string.Create(System.Globalization.CultureInfo.InvariantCulture,

@@ -8,27 +8,31 @@ namespace AcDream.Core.Physics.Motion;
 public sealed partial class MotionInterp
 {
     /// <summary>The launch speed of the charged jump, m/s upwards: 0 below a charge of EPSILON, else the weenie's
-    /// <see cref="IMotionWeenie.InqJumpVelocity"/> of the charge clamped to 1 (0 when it refuses; 10 with no weenie).</summary>
+    /// <see cref="IMotionWeenie.InqJumpVelocity"/> of the charge clamped to 1 (0 when it refuses; 10 with no weenie). Retail
+    /// <c>CMotionInterp::get_jump_v_z</c>.</summary>
     // retail: CMotionInterp::get_jump_v_z (acclient.c:343342)
-    public double GetJumpVZ()
+    public double JumpVelocityZ
     {
-        float extent = JumpExtent;
-        if (extent < (double)PhysicsGlobals.Epsilon)
+        get
         {
-            return 0.0;
-        }
+            float extent = JumpExtent;
+            if (extent < (double)PhysicsGlobals.Epsilon)
+            {
+                return 0.0;
+            }
 
-        if (extent > 1.0)
-        {
-            extent = 1.0f;
-        }
+            if (extent > 1.0)
+            {
+                extent = 1.0f;
+            }
 
-        if (_weenieObj is null)
-        {
-            return NoWeenieJumpVelocity;
-        }
+            if (_weenieObj is null)
+            {
+                return NoWeenieJumpVelocity;
+            }
 
-        return _weenieObj.InqJumpVelocity(extent, out float vz) ? vz : 0.0;
+            return _weenieObj.InqJumpVelocity(extent, out float vz) ? vz : 0.0;
+        }
     }
 
     /// <summary>Whether a jump may be charged: <see cref="MotionError.CantJumpLoadedDown"/> when the weenie refuses the
@@ -165,7 +169,7 @@ public sealed partial class MotionInterp
     /// </summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
     /// <param name="extent">The jump's charge, 0..1: the power bar's level, as retail's only caller
-    /// (<c>ClientCombatSystem::DoJump</c>) passes it. The launch speed (<see cref="GetJumpVZ"/>) and the stamina cost
+    /// (<c>ClientCombatSystem::DoJump</c>) passes it. The launch speed (<see cref="JumpVelocityZ"/>) and the stamina cost
     /// (<see cref="IMotionWeenie.JumpStaminaCost"/>) both come from it.</param>
     /// <param name="staminaCost">The stamina the jump costs (0 with no weenie or when refused).</param>
     /// <exception cref="System.ArgumentException"><paramref name="extent"/> is NaN or infinite (nothing changes).</exception>
@@ -215,22 +219,26 @@ public sealed partial class MotionInterp
     }
 
     /// <summary>
-    /// The velocity the object leaves the ground with, local axes: <see cref="GetStateVelocity"/> with z the jump's
-    /// <see cref="GetJumpVZ"/>; when all three are below EPSILON, the object's current velocity in local axes.
+    /// The velocity the object leaves the ground with, local axes: <see cref="StateVelocity"/> with z the jump's
+    /// <see cref="JumpVelocityZ"/>; when all three are below EPSILON, the object's current velocity in local axes. Retail
+    /// <c>CMotionInterp::get_leave_ground_velocity</c>.
     /// </summary>
     // retail: CMotionInterp::get_leave_ground_velocity (acclient.c:343805)
-    public Vector3 GetLeaveGroundVelocity()
+    public Vector3 LeaveGroundVelocity
     {
-        Vector3 v = GetStateVelocity();
-        float vz = (float)GetJumpVZ();
-        v.Z = vz;
-        if (Math.Abs(v.X) < (double)PhysicsGlobals.Epsilon && Math.Abs(v.Y) < (double)PhysicsGlobals.Epsilon
-            && Math.Abs(vz) < (double)PhysicsGlobals.Epsilon && _physicsObj is not null)
+        get
         {
-            v = GlobalVelocityToLocal(_physicsObj);
-        }
+            Vector3 v = StateVelocity;
+            float vz = (float)JumpVelocityZ;
+            v.Z = vz;
+            if (Math.Abs(v.X) < (double)PhysicsGlobals.Epsilon && Math.Abs(v.Y) < (double)PhysicsGlobals.Epsilon
+                && Math.Abs(vz) < (double)PhysicsGlobals.Epsilon && _physicsObj is not null)
+            {
+                v = GlobalVelocityToLocal(_physicsObj);
+            }
 
-        return v;
+            return v;
+        }
     }
 
     /// <summary>The object landed: a creature with gravity drops its link animations and re-applies its movement (so a
@@ -259,7 +267,7 @@ public sealed partial class MotionInterp
             return;
         }
 
-        Vector3 v = GetLeaveGroundVelocity();
+        Vector3 v = LeaveGroundVelocity;
         obj.SetLocalVelocity(v);
         StandingLongJump = false;
         JumpExtent = 0f;

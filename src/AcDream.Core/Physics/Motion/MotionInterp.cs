@@ -11,13 +11,13 @@ namespace AcDream.Core.Physics.Motion;
 /// motion the object performs, decides jumps and their launch velocity, and reacts to landing and leaving the ground.
 /// It keeps two states: <see cref="RawState"/> (the commands as given) and <see cref="InterpretedState"/> (after the
 /// hold-key, backwards, side-step and turn conversions), and sends the interpreted motion to the part array's motion table
-/// (<see cref="Objects.Parts.IPartArray.MotionTable"/>), which moves the body.
+/// (<see cref="Objects.Parts.IPartArray.MotionPlayer"/>), which moves the body.
 /// </summary>
 /// <remarks>
 /// <para>Created by <see cref="MovementManager"/>. The player's commands go in through <see cref="DoMotion"/> /
 /// <see cref="StopMotion"/> (raw); a remote object's state arrives whole through <see cref="MoveToInterpretedState"/>
 /// (what a MovementEvent applies). Speeds: walk 3.12 m/s, run 4 m/s times the run rate, side-step 1.25 m/s, all
-/// clamped by <see cref="GetStateVelocity"/> to 4 times the run rate.</para>
+/// clamped by <see cref="StateVelocity"/> to 4 times the run rate.</para>
 /// <para>The retail arithmetic is x87: products of floats are evaluated in double and rounded where retail stores a float.</para>
 /// </remarks>
 public sealed partial class MotionInterp : IMotionInterpreter
@@ -74,7 +74,7 @@ public sealed partial class MotionInterp : IMotionInterpreter
     /// <summary>The motion performed.</summary>
     public InterpretedMotionState InterpretedState { get; } = new();
 
-    /// <summary>Divisor of a run's forward speed in <see cref="GetAdjustedMaxSpeed"/> (retail <c>current_speed_factor</c>,
+    /// <summary>Divisor of a run's forward speed in <see cref="AdjustedMaxSpeed"/> (retail <c>current_speed_factor</c>,
     /// 1 at creation).</summary>
     /// <exception cref="System.ArgumentException">The value is not finite and positive (state unchanged).</exception>
     public float CurrentSpeedFactor
@@ -169,66 +169,78 @@ public sealed partial class MotionInterp : IMotionInterpreter
         && InterpretedState.SidestepCommand == MotionCommand.None
         && InterpretedState.TurnCommand == MotionCommand.None;
 
-    /// <summary>The largest speed the character can run, m/s: 4 times the run rate (4 with no weenie).</summary>
+    /// <summary>The largest speed the character can run, m/s: 4 times the run rate (4 with no weenie). Retail
+    /// <c>CMotionInterp::get_max_speed</c>.</summary>
     // retail: CMotionInterp::get_max_speed (acclient.c:343485)
-    public double GetMaxSpeed()
+    public double MaxSpeed
     {
-        if (_weenieObj is null)
+        get
         {
-            return 1.0 * RunAnimSpeed;
-        }
+            if (_weenieObj is null)
+            {
+                return 1.0 * RunAnimSpeed;
+            }
 
-        return _weenieObj.InqRunRate(out float rate) ? rate * RunAnimSpeed : MyRunRate * RunAnimSpeed;
+            return _weenieObj.InqRunRate(out float rate) ? rate * RunAnimSpeed : MyRunRate * RunAnimSpeed;
+        }
     }
 
     /// <summary>The largest speed for the current motion, m/s: while running, 4 times the run speed over
-    /// <see cref="CurrentSpeedFactor"/>; otherwise <see cref="GetMaxSpeed"/>.</summary>
+    /// <see cref="CurrentSpeedFactor"/>; otherwise <see cref="MaxSpeed"/>. Retail
+    /// <c>CMotionInterp::get_adjusted_max_speed</c>.</summary>
     // retail: CMotionInterp::get_adjusted_max_speed (acclient.c:343511)
-    public double GetAdjustedMaxSpeed()
+    public double AdjustedMaxSpeed
     {
-        double rate = RunRate();
-        if (InterpretedState.ForwardCommand == MotionCommand.RunForward)
+        get
         {
-            rate = (double)InterpretedState.ForwardSpeed / CurrentSpeedFactor;
-        }
+            double rate = RunRate();
+            if (InterpretedState.ForwardCommand == MotionCommand.RunForward)
+            {
+                rate = (double)InterpretedState.ForwardSpeed / CurrentSpeedFactor;
+            }
 
-        return rate * RunAnimSpeed;
+            return rate * RunAnimSpeed;
+        }
     }
 
     /// <summary>
     /// The velocity the interpreted state asks for, in the object's local axes (m/s): x = 1.25 × side-step speed,
-    /// y = 3.12 × walk speed or 4 × run speed, z = 0, scaled down to at most 4 × the run rate.
+    /// y = 3.12 × walk speed or 4 × run speed, z = 0, scaled down to at most 4 × the run rate. Retail
+    /// <c>CMotionInterp::get_state_velocity</c>.
     /// </summary>
     // retail: CMotionInterp::get_state_velocity (acclient.c:343538)
-    public Vector3 GetStateVelocity()
+    public Vector3 StateVelocity
     {
-        InterpretedMotionState s = InterpretedState;
-        float x = s.SidestepCommand == MotionCommand.SideStepRight ? (float)(SidestepAnimSpeed * s.SidestepSpeed) : 0f;
-        float y;
-        if (s.ForwardCommand == MotionCommand.WalkForward)
+        get
         {
-            y = (float)((double)WalkAnimSpeed * s.ForwardSpeed);
-        }
-        else if (s.ForwardCommand == MotionCommand.RunForward)
-        {
-            y = (float)(RunAnimSpeed * s.ForwardSpeed);
-        }
-        else
-        {
-            y = 0f;
-        }
+            InterpretedMotionState s = InterpretedState;
+            float x = s.SidestepCommand == MotionCommand.SideStepRight ? (float)(SidestepAnimSpeed * s.SidestepSpeed) : 0f;
+            float y;
+            if (s.ForwardCommand == MotionCommand.WalkForward)
+            {
+                y = (float)((double)WalkAnimSpeed * s.ForwardSpeed);
+            }
+            else if (s.ForwardCommand == MotionCommand.RunForward)
+            {
+                y = (float)(RunAnimSpeed * s.ForwardSpeed);
+            }
+            else
+            {
+                y = 0f;
+            }
 
-        float z = 0f;
-        double max = RunRate() * RunAnimSpeed;
-        double len = Math.Sqrt((double)x * x + (double)y * y + (double)z * z);
-        if (len > max)
-        {
-            x = (float)(1.0 / len * x * max);
-            y = (float)(1.0 / len * y * max);
-            z = (float)(1.0 / len * z * max);
-        }
+            float z = 0f;
+            double max = RunRate() * RunAnimSpeed;
+            double len = Math.Sqrt((double)x * x + (double)y * y + (double)z * z);
+            if (len > max)
+            {
+                x = (float)(1.0 / len * x * max);
+                y = (float)(1.0 / len * y * max);
+                z = (float)(1.0 / len * z * max);
+            }
 
-        return new Vector3(x, y, z);
+            return new Vector3(x, y, z);
+        }
     }
 
     /// <summary>The weenie's run rate, else <see cref="MyRunRate"/>; 1 with no weenie.</summary>

@@ -2,12 +2,13 @@ using System;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Motion.MoveTo;
 
 namespace AcDream.Core.Physics.Motion;
 
 /// <summary>
 /// An object's movement manager (retail <c>MovementManager</c>, PORTAL/canim/CMovementManager.c): it owns the motion
-/// interpreter (created on first use, in its default state) and the move-to manager (<see cref="Motion.MoveToManager"/>,
+/// interpreter (created on first use, in its default state) and the move-to manager (<see cref="MoveTo.MoveToManager"/>,
 /// created on the first move-to), routes the ground events and target reports to both, runs the player's motion commands
 /// and the server's move-tos (<see cref="MoveToObject"/>, <see cref="MoveToPosition"/>, <see cref="TurnToObject"/>,
 /// <see cref="TurnToHeading"/>: retail <c>PerformMovement</c> types 6–9). This is what an object gets when the physics
@@ -38,7 +39,7 @@ public sealed class MovementManager : IMovementManager
     /// <summary>Creates the move-to manager when absent (engine: <c>unpack_movement</c> before a move-to of types 6–9).</summary>
     /// <returns>The move-to manager.</returns>
     // retail: MovementManager::MakeMoveToManager (acclient.c:339100)
-    internal MoveToManager MakeMoveToManager() => MoveToManager ??= Motion.MoveToManager.Create(PhysicsObj, WeenieObj);
+    internal MoveToManager MakeMoveToManager() => MoveToManager ??= MoveTo.MoveToManager.Create(PhysicsObj, WeenieObj);
 
     /// <summary>The motion interpreter, or null until created (by <see cref="GetOrCreateMotionInterpreter"/>,
     /// <see cref="EnterDefaultState"/> or any motion call). Never creates it.</summary>

@@ -38,9 +38,9 @@ public enum ObjectSetupIssues
     /// <summary>The object is not in a cell (never entered the world, or could not be placed): the tick skips it.</summary>
     NotInCell = 1 << 5,
 
-    /// <summary>A part array without a motion table (<see cref="Parts.IPartArray.MotionTable"/> null) while the object moves
+    /// <summary>A part array without a motion table (<see cref="Parts.IPartArray.MotionPlayer"/> null) while the object moves
     /// through retail's movement manager (or has none yet): the motion commands (<c>DoMotion(WalkForward)</c>...) reach no
     /// motion table, so the object does not walk, run or turn. Give the part array one, e.g.
-    /// <see cref="Motion.RetailSpeedMotionTable"/>. Not reported for an object whose movement manager is a client's own.</summary>
+    /// <see cref="Motion.SpeedOnlyMotionPlayer"/>. Not reported for an object whose movement manager is a client's own.</summary>
     NoMotionTable = 1 << 6,
 }

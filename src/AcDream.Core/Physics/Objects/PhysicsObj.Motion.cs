@@ -51,7 +51,7 @@ public sealed partial class PhysicsObj
         }
 
         // retail: CPartArray::DoInterpretedMotion (acclient.c:326017): 7 without a motion-table manager
-        IMotionTable? table = PartArray.MotionTable;
+        IMotionPlayer? table = PartArray.MotionPlayer;
         return table is null ? MotionError.NoMotionTable : table.DoInterpretedMotion(motion, p);
     }
 
@@ -63,15 +63,15 @@ public sealed partial class PhysicsObj
             return MotionError.GeneralMovementFailure;
         }
 
-        IMotionTable? table = PartArray.MotionTable;
+        IMotionPlayer? table = PartArray.MotionPlayer;
         return table is null ? MotionError.NoMotionTable : table.StopInterpretedMotion(motion, p);
     }
 
     // retail: CPhysicsObj::StopCompletely_Internal (acclient.c:315787)
-    internal void StopCompletelyInternal() => PartArray?.MotionTable?.StopCompletely();
+    internal void StopCompletelyInternal() => PartArray?.MotionPlayer?.StopCompletely();
 
     // retail: CPhysicsObj::InitializeMotionTables (acclient.c:315742)
-    internal void InitializeMotionTables() => PartArray?.MotionTable?.InitializeMotionTables();
+    internal void InitializeMotionTables() => PartArray?.MotionPlayer?.InitializeMotionTables();
 
     // retail: CPhysicsObj::RemoveLinkAnimations (acclient.c:317144)
     internal void RemoveLinkAnimations() => PartArray?.HandleEnterWorld();
@@ -80,7 +80,7 @@ public sealed partial class PhysicsObj
     // retail: CPhysicsObj::CheckForCompletedMotions (acclient.c:317154) -> MotionTableManager::CheckForCompletedMotions
     internal void CheckForCompletedMotions()
     {
-        IMotionTable? table = PartArray?.MotionTable;
+        IMotionPlayer? table = PartArray?.MotionPlayer;
         if (table is null)
         {
             return;
@@ -93,7 +93,7 @@ public sealed partial class PhysicsObj
     /// <summary>Hands every motion <paramref name="table"/> has reported done to the movement manager, oldest first (retail's
     /// manager calls <c>CPhysicsObj::MotionDone</c> for each as it finds it).</summary>
     // retail: CPhysicsObj::MotionDone (acclient.c:317096), once per motion the manager reports
-    internal void ReportCompletedMotions(IMotionTable table)
+    internal void ReportCompletedMotions(IMotionPlayer table)
     {
         while (table.TryTakeCompletedMotion(out MotionCommand motion, out bool success))
         {

@@ -1,6 +1,7 @@
 using System;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Physics.Objects;
 

@@ -18,7 +18,7 @@ public sealed partial class PhysicsObj
     /// the client's concern and not ported here.</para>
     /// <para>Before the first report the network layer gives the object a part array from its Setup, a motion table and
     /// a weenie, and its first position (<see cref="EnterWorld"/>); between reports the server's MovementEvents drive its motion
-    /// (<see cref="Motion.MovementEvent.ApplyInterpretedMotion"/>; docs/interpolation.md, "What a network layer sets first").</para></remarks>
+    /// (<see cref="Motion.Wire.MovementEvent.ApplyInterpretedMotion"/>; docs/interpolation.md, "What a network layer sets first").</para></remarks>
     /// <param name="p">The reported position: the cell id and the frame local to that cell's landblock, as the server's
     /// position update carries them; unit quaternion, origin within ±<see cref="InputLimits.MaxCoordinate"/>, outdoor x, y in
     /// [−192, 384] (<see cref="InputLimits.OutdoorMargin"/>).</param>

@@ -34,7 +34,7 @@ public sealed partial class PhysicsObj
                     issues |= ObjectSetupIssues.NoCollisionSpheres;
                 }
 
-                if (parts.MotionTable is null && Movement is null or Motion.MovementManager)
+                if (parts.MotionPlayer is null && Movement is null or Motion.MovementManager)
                 {
                     issues |= ObjectSetupIssues.NoMotionTable;
                 }

@@ -54,7 +54,7 @@ public class AnimatedPartArrayApiTests
         PhysicsObj obj = world.CreateObject(1);
         var parts = new AnimatedPartArray(Setup(), 1, null, null);
         obj.PartArray = parts;
-        Assert.Null(parts.MotionTable);
+        Assert.Null(parts.MotionPlayer);
         // CPartArray::DoInterpretedMotion without a motion-table manager: 7 (acclient.c:326017).
         Assert.Equal(MotionError.NoMotionTable, obj.DoInterpretedMotion(MotionCommand.WalkForward, new MovementParameters()));
     }

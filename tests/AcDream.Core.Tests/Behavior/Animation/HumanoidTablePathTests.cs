@@ -17,7 +17,7 @@ namespace AcDream.Core.Tests.Behavior.Animation;
 
 /// <summary>
 /// The same player motion — walk, turn while walking, run while turning, stop turning, stop — through the stand-in
-/// (<see cref="RetailSpeedMotionTable"/>) and through the retail motion table path (a humanoid-like table read from bytes,
+/// (<see cref="SpeedOnlyMotionPlayer"/>) and through the retail motion table path (a humanoid-like table read from bytes,
 /// <see cref="HumanoidMotionTable"/>, played by <c>MotionTableManager</c> / <c>CMotionTable::GetObjectSequence</c> onto an
 /// <see cref="AnimSequence"/>), on flat ground, 0.05 s ticks.
 /// </summary>
@@ -45,14 +45,14 @@ public class HumanoidTablePathTests
     private static SimplePartArray StandIn()
     {
         SimplePartArray p = Walkers.OneSphere();
-        p.MotionTable = new RetailSpeedMotionTable();
+        p.MotionPlayer = new SpeedOnlyMotionPlayer();
         return p;
     }
 
     private static SimplePartArray TableOnSimpleParts()
     {
         SimplePartArray p = Walkers.OneSphere();
-        p.MotionTable = new MotionTablePlayer(MotionTable.UnPack(HumanoidMotionTable.Bytes()));
+        p.MotionPlayer = new MotionTablePlayer(MotionTable.UnPack(HumanoidMotionTable.Bytes()));
         return p;
     }
 
@@ -76,7 +76,7 @@ public class HumanoidTablePathTests
     {
         var steps = new List<Step>();
         MovementManager mm = MovementManager.Of(player);
-        IMotionTable table = player.PartArray!.MotionTable!;
+        IMotionPlayer table = player.PartArray!.MotionPlayer!;
         void Run(int n) => SweepScene.Run(player.World, n, _ =>
         {
             Frame f = player.Position.Frame;

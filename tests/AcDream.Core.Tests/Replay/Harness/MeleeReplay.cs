@@ -8,6 +8,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support.Shared;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 
@@ -187,7 +188,7 @@ public static class MeleeReplay
         PhysicsObj player = world.CreateObject(MeleeRecording.Player);
         player.Weenie = new ReplayPlayerWeenie();
         var playerParts = Walkers.OneSphere(0.35f);
-        playerParts.MotionTable = new RetailSpeedMotionTable();
+        playerParts.MotionPlayer = new SpeedOnlyMotionPlayer();
         player.PartArray = playerParts;
         player.EnterWorld(playerStart);
         world.Player = player;
@@ -198,7 +199,7 @@ public static class MeleeReplay
             PhysicsObj m = world.CreateObject(guid);
             m.Weenie = RemoteCreatureWeenie.Creature;
             var parts = Walkers.OneSphere(0.35f);
-            parts.MotionTable = new RetailSpeedMotionTable();
+            parts.MotionPlayer = new SpeedOnlyMotionPlayer();
             m.PartArray = parts;
             m.EnterWorld(rec.Creates[guid].Position);
             MovementManager.Of(m);

@@ -10,6 +10,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support.Shared;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 
@@ -236,7 +237,7 @@ public static class RealReplay
         PhysicsObj obj = world.CreateObject(guid);
         obj.Weenie = RemoteCreatureWeenie.Player;
         SimplePartArray parts = Walkers.OneSphere();
-        parts.MotionTable = new RetailSpeedMotionTable();
+        parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         obj.PartArray = parts;
         obj.EnterWorld(first.Position);
         var message = new MovementEventMessage();

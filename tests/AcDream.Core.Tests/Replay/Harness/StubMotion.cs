@@ -15,10 +15,10 @@ public sealed class StubMotion : IMovementManager, IMotionInterpreter, IMovement
         HasInterpreter = hasInterpreter;
     }
 
-    /// <summary>get_max_speed result, m/s.</summary>
+    /// <summary>get_max_speed result, m/s (the seam's <see cref="IMotionInterpreter.MaxSpeed"/>).</summary>
     public double MaxSpeed { get; set; }
 
-    /// <summary>get_adjusted_max_speed result, m/s.</summary>
+    /// <summary>get_adjusted_max_speed result, m/s (the seam's <see cref="IMotionInterpreter.AdjustedMaxSpeed"/>).</summary>
     public double AdjustedMaxSpeed { get; set; }
 
     /// <summary>Whether an interpreter exists.</summary>
@@ -38,12 +38,6 @@ public sealed class StubMotion : IMovementManager, IMotionInterpreter, IMovement
 
     /// <inheritdoc />
     public IMovementManager Create(PhysicsObj obj) => this;
-
-    /// <inheritdoc />
-    public double GetMaxSpeed() => MaxSpeed;
-
-    /// <inheritdoc />
-    public double GetAdjustedMaxSpeed() => AdjustedMaxSpeed;
 
     /// <inheritdoc />
     public bool IsMovingTo() => MovingTo;

@@ -43,8 +43,8 @@ public class MotionConstantsTests
         // Data-derived: the humanoid motion table 0x09000001's TurnRight modifier carries omega.z = -1.5 rad/s (the one
         // reading of the installed data found); no client constant exists (add_motion acclient.c:337430 multiplies the
         // motion data's omega by the speed).
-        Assert.Equal(1.5f, RetailSpeedMotionTable.TurnAnimSpeed);
-        Assert.Equal(0x3FC00000u, Bits(RetailSpeedMotionTable.TurnAnimSpeed));
+        Assert.Equal(1.5f, SpeedOnlyMotionPlayer.TurnAnimSpeed);
+        Assert.Equal(0x3FC00000u, Bits(SpeedOnlyMotionPlayer.TurnAnimSpeed));
     }
 
     [Fact]

@@ -44,19 +44,19 @@ public class MotionInterpJumpTests
     [InlineData(300, 0f, 0.0)]
     [InlineData(300, 0.5f, 6.425146)]
     [InlineData(300, 1f, 9.086529)]
-    public void GetJumpVZ_ForExtentAndSkill(int skill, float extent, double expected)
+    public void JumpVelocityZ_ForExtentAndSkill(int skill, float extent, double expected)
     {
         var (_, _, mi, _) = MotionFixture.Create(new PlayerWeenie { JumpSkill = skill }, gravity: true);
         mi.JumpExtent = extent;
-        Assert.Equal(expected, mi.GetJumpVZ(), 5);
+        Assert.Equal(expected, mi.JumpVelocityZ, 5);
     }
 
     [Fact]
-    public void GetJumpVZ_NoWeenie_Is10()
+    public void JumpVelocityZ_NoWeenie_Is10()
     {
         var (_, _, mi, _) = MotionFixture.Create(null, gravity: true);
         mi.JumpExtent = 0.5f;
-        Assert.Equal(10.0, mi.GetJumpVZ());
+        Assert.Equal(10.0, mi.JumpVelocityZ);
     }
 
     [Fact]
@@ -111,7 +111,7 @@ public class MotionInterpJumpTests
         var (obj, _, mi, _) = MotionFixture.Create(new PlayerWeenie(), gravity: true);
         MotionFixture.SetOnGround(obj);
         obj.SetVelocity(new Vector3(1f, 2f, 0f));
-        Assert.Equal(new Vector3(1f, 2f, 0f), mi.GetLeaveGroundVelocity());
+        Assert.Equal(new Vector3(1f, 2f, 0f), mi.LeaveGroundVelocity);
         obj.SetOnWalkable(false);
         Assert.Equal(new Vector3(1f, 2f, 0f), obj.Velocity);
     }

@@ -17,7 +17,7 @@ public class MotionInterpVelocityTests
         // No hold key: WalkForward at speed 1; y = (float)(3.12f * 1.0) = 3.12f.
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(1f, mi.InterpretedState.ForwardSpeed);
-        Assert.Equal(new Vector3(0f, 3.12f, 0f), mi.GetStateVelocity());
+        Assert.Equal(new Vector3(0f, 3.12f, 0f), mi.StateVelocity);
         Assert.Equal(new Vector3(0f, 3.12f, 0f), table.Velocity);
         Assert.Equal(MotionCommand.WalkForward, mi.RawState.ForwardCommand);
     }
@@ -31,7 +31,7 @@ public class MotionInterpVelocityTests
         Assert.Equal(MotionError.None, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params(1f, HoldKey.Run)));
         Assert.Equal(MotionCommand.RunForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(1f, mi.InterpretedState.ForwardSpeed);
-        Assert.Equal(new Vector3(0f, 4f, 0f), mi.GetStateVelocity());
+        Assert.Equal(new Vector3(0f, 4f, 0f), mi.StateVelocity);
         Assert.Equal(new Vector3(0f, 4f, 0f), table.Velocity);
         // The raw state keeps the command as given (WalkForward) and the run key as the current hold key.
         Assert.Equal(MotionCommand.WalkForward, mi.RawState.ForwardCommand);
@@ -46,9 +46,9 @@ public class MotionInterpVelocityTests
         var (_, mm, mi, table) = MotionFixture.Create(new FixedRateWeenie(2.8256f));
         mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params(1f, HoldKey.Run));
         Assert.Equal(2.8256f, mi.InterpretedState.ForwardSpeed);
-        Assert.Equal(new Vector3(0f, 4f * 2.8256f, 0f), mi.GetStateVelocity());
+        Assert.Equal(new Vector3(0f, 4f * 2.8256f, 0f), mi.StateVelocity);
         Assert.Equal(4f * 2.8256f, table.Velocity.Y);
-        Assert.Equal(4.0 * 2.8256f, mi.GetMaxSpeed());
+        Assert.Equal(4.0 * 2.8256f, mi.MaxSpeed);
     }
 
     [Fact]
@@ -58,7 +58,7 @@ public class MotionInterpVelocityTests
         var (_, mm, mi, _) = MotionFixture.Create(null);
         var s = new InterpretedMotionState { ForwardCommand = MotionCommand.RunForward, ForwardSpeed = 2.8256f };
         mm.MoveToInterpretedState(s);
-        Vector3 v = mi.GetStateVelocity();
+        Vector3 v = mi.StateVelocity;
         Assert.Equal(4f, v.Y, 5);
         Assert.Equal(0f, v.X);
     }
@@ -71,7 +71,7 @@ public class MotionInterpVelocityTests
         mm.DoMotion(MotionCommand.WalkBackwards, MotionFixture.Params());
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(-0.65f, mi.InterpretedState.ForwardSpeed);
-        Assert.Equal(-2.0279998779296875f, mi.GetStateVelocity().Y);
+        Assert.Equal(-2.0279998779296875f, mi.StateVelocity.Y);
         Assert.Equal(-2.0279998779296875f, table.Velocity.Y);
         Assert.Equal(MotionCommand.WalkBackwards, mi.RawState.ForwardCommand);
     }
@@ -85,7 +85,7 @@ public class MotionInterpVelocityTests
         mm.DoMotion(MotionCommand.WalkBackwards, MotionFixture.Params(1f, HoldKey.Run));
         Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
         Assert.Equal(-1.54375f, mi.InterpretedState.ForwardSpeed, 6);
-        Assert.Equal(-4.8165, mi.GetStateVelocity().Y, 4);
+        Assert.Equal(-4.8165, mi.StateVelocity.Y, 4);
     }
 
     [Fact]
@@ -96,7 +96,7 @@ public class MotionInterpVelocityTests
         mm.DoMotion(MotionCommand.SideStepRight, MotionFixture.Params());
         Assert.Equal(MotionCommand.SideStepRight, mi.InterpretedState.SidestepCommand);
         Assert.Equal(1.247999906539917f, mi.InterpretedState.SidestepSpeed);
-        Assert.Equal(1.559999942779541f, mi.GetStateVelocity().X);
+        Assert.Equal(1.559999942779541f, mi.StateVelocity.X);
         Assert.Equal(1.559999942779541f, table.Velocity.X);
 
         // Left: SideStepRight at -1, then * ratio: -1.2479999f; x = -1.5599999.
@@ -104,7 +104,7 @@ public class MotionInterpVelocityTests
         mm.DoMotion(MotionCommand.SideStepLeft, MotionFixture.Params());
         Assert.Equal(MotionCommand.SideStepRight, mi.InterpretedState.SidestepCommand);
         Assert.Equal(-1.247999906539917f, mi.InterpretedState.SidestepSpeed);
-        Assert.Equal(-1.559999942779541f, mi.GetStateVelocity().X);
+        Assert.Equal(-1.559999942779541f, mi.StateVelocity.X);
         Assert.Equal(MotionCommand.SideStepLeft, mi.RawState.SidestepCommand);
     }
 
@@ -115,7 +115,7 @@ public class MotionInterpVelocityTests
         var (_, mm, mi, _) = MotionFixture.Create(new FixedRateWeenie(2.8256f));
         mm.DoMotion(MotionCommand.SideStepLeft, MotionFixture.Params(1f, HoldKey.Run));
         Assert.Equal(-3f, mi.InterpretedState.SidestepSpeed);
-        Assert.Equal(-3.75f, mi.GetStateVelocity().X);
+        Assert.Equal(-3.75f, mi.StateVelocity.X);
     }
 
     [Fact]
@@ -126,7 +126,7 @@ public class MotionInterpVelocityTests
         mm.DoMotion(MotionCommand.TurnRight, MotionFixture.Params());
         Assert.Equal(1f, mi.InterpretedState.TurnSpeed);
         Assert.Equal(new Vector3(0f, 0f, -1.5f), table.Omega);
-        Assert.Equal(Vector3.Zero, mi.GetStateVelocity());
+        Assert.Equal(Vector3.Zero, mi.StateVelocity);
 
         // TurnLeft with the run key: TurnRight at -1, then * 1.5 = -1.5; omega.z = (float)(-1.5 * -1.5) = 2.25.
         mm.StopMotion(MotionCommand.TurnRight, MotionFixture.Params());
@@ -179,7 +179,7 @@ public class MotionInterpVelocityTests
     {
         // CPartArray::DoInterpretedMotion returns 7 without a motion-table manager: nothing is queued or recorded.
         var (obj, mm, mi, _) = MotionFixture.Create(new PlayerWeenie());
-        ((AcDream.Core.Physics.Objects.Parts.SimplePartArray)obj.PartArray!).MotionTable = null;
+        ((AcDream.Core.Physics.Objects.Parts.SimplePartArray)obj.PartArray!).MotionPlayer = null;
         Assert.Equal(MotionError.NoMotionTable, mm.DoMotion(MotionCommand.WalkForward, MotionFixture.Params()));
         Assert.Equal(MotionCommand.Ready, mi.InterpretedState.ForwardCommand);
         Assert.Equal(MotionCommand.Ready, mi.RawState.ForwardCommand);

@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Spatial;
 using Xunit;
 using AcDream.Core.Physics.Format;
+using AcDream.Core.Physics.Motion.MoveTo;
 
 namespace AcDream.Core.Tests.Retail.Motion;
 

@@ -7,14 +7,15 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
 using Xunit;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Retail.Motion;
 
 /// <summary>A motion table that records every interpreted motion it is asked to play (and plays it on a retail-speed
 /// table).</summary>
-internal sealed class RecordingMotionTable : IMotionTable
+internal sealed class RecordingMotionTable : IMotionPlayer
 {
-    private readonly RetailSpeedMotionTable _inner = new();
+    private readonly SpeedOnlyMotionPlayer _inner = new();
 
     public List<MotionCommand> Done { get; } = new();
 
@@ -68,7 +69,7 @@ public class SetObjectMovementTests
         PhysicsObj obj = world.CreateObject(MovementEventBytes.ObjectId);
         obj.Weenie = weenie;
         var table = new RecordingMotionTable();
-        obj.PartArray = new SimplePartArray(1, 0) { MotionTable = table };
+        obj.PartArray = new SimplePartArray(1, 0) { MotionPlayer = table };
         obj.SetState((PhysicsState)PhysicsGlobals.DefaultState & ~PhysicsState.Gravity);
         MovementManager.Of(obj);
         return (obj, table, new MovementEventMessage());

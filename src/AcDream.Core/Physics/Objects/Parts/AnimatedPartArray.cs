@@ -81,7 +81,7 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
     public AnimSequence Sequence => _sequence;
 
     /// <inheritdoc />
-    public IMotionTable? MotionTable => _player;
+    public IMotionPlayer? MotionPlayer => _player;
 
     /// <summary>The object this part array belongs to (set when assigned to <see cref="PhysicsObj.PartArray"/>): the
     /// sequence's hooks are queued on it and finished motions reported to it.</summary>

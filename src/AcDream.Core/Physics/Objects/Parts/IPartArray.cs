@@ -32,11 +32,11 @@ public interface IPartArray
     ReadOnlySpan<Sphere> Spheres { get; }
 
     /// <summary>
-    /// The motion table the motion interpreter plays motions on (retail: the part array's motion-table manager), or null
-    /// when the object has none (the interpreter's motions then fail with <see cref="Motion.MotionError.NoMotionTable"/>
+    /// The motion player the motion interpreter plays motions on (retail: the part array's motion-table manager with its
+    /// motion table and sequence, <c>CPartArray::motion_table_manager</c>), or null when the object has none (the interpreter's motions then fail with <see cref="Motion.MotionError.NoMotionTable"/>
     /// and only its states change). <see cref="Update"/> moves the body by its velocity and omega.
     /// </summary>
-    Motion.IMotionTable? MotionTable => null;
+    Motion.IMotionPlayer? MotionPlayer => null;
 
     /// <summary>Number of parts, for <c>UpdateChild</c>'s part lookup.</summary>
     int NumParts { get; }

@@ -140,27 +140,29 @@ public sealed partial class SimplePartArray : IPartArray
 
     /// <summary>True when the sequence has no velocity and no omega: <see cref="Update"/> leaves the offset at the identity.
     /// (<see cref="HandleMovementCount"/> counts the visits the scene actually makes.)</summary>
-    public bool IsIdle => _motionTable is null
+    public bool IsIdle => _motionPlayer is null
         ? _sequenceVelocity == Vector3.Zero && _sequenceOmega == Vector3.Zero
-        : _motionTable.Velocity == Vector3.Zero && _motionTable.Omega == Vector3.Zero;
+        : _motionPlayer.Velocity == Vector3.Zero && _motionPlayer.Omega == Vector3.Zero;
 
     /// <summary>
-    /// The motion table (null by default). When set, it drives the sequence: <see cref="Update"/> moves the body by the
-    /// table's velocity and omega instead of <see cref="SequenceVelocity"/> and <see cref="SequenceOmega"/>. Set a
-    /// <see cref="Motion.RetailSpeedMotionTable"/> for a creature that should walk, run and turn at retail speeds without
+    /// The motion player (null by default): what plays the object's motions, a player of a motion table
+    /// (<see cref="Animation.MotionTablePlayer"/>) or a stand-in. When set, it drives the sequence: <see cref="Update"/>
+    /// moves the body by the player's velocity and omega instead of <see cref="SequenceVelocity"/> and
+    /// <see cref="SequenceOmega"/>. Set a
+    /// <see cref="Motion.SpeedOnlyMotionPlayer"/> for a creature that should walk, run and turn at retail speeds without
     /// the real motion tables.
     /// </summary>
-    public Motion.IMotionTable? MotionTable
+    public Motion.IMotionPlayer? MotionPlayer
     {
-        get => _motionTable;
+        get => _motionPlayer;
         set
         {
             Owner?.Touch();
-            _motionTable = value;
+            _motionPlayer = value;
         }
     }
 
-    private Motion.IMotionTable? _motionTable;
+    private Motion.IMotionPlayer? _motionPlayer;
 
     /// <summary>The object this part array belongs to (set when assigned to <see cref="PhysicsObj.PartArray"/>), woken when the
     /// sequence changes.</summary>
@@ -203,8 +205,8 @@ public sealed partial class SimplePartArray : IPartArray
     // retail: CSequence::apply_physics (acclient.c:339859), reached from CSequence::update with an empty anim list
     public void Update(float quantum, ref Frame offsetFrame)
     {
-        Vector3 v = _motionTable is null ? _sequenceVelocity : _motionTable.Velocity;
-        Vector3 w = _motionTable is null ? _sequenceOmega : _motionTable.Omega;
+        Vector3 v = _motionPlayer is null ? _sequenceVelocity : _motionPlayer.Velocity;
+        Vector3 w = _motionPlayer is null ? _sequenceOmega : _motionPlayer.Omega;
         if (IsStill(v, w) && quantum >= 0f && quantum <= float.MaxValue)
         {
             // An idle sequence (the usual case: no animation velocity): s·v is +0 on each axis (s = quantum is finite and not
@@ -253,7 +255,7 @@ public sealed partial class SimplePartArray : IPartArray
     public void HandleMovement()
     {
         HandleMovementCount++;
-        if (_motionTable is not null)
+        if (_motionPlayer is not null)
         {
             Owner?.CheckForCompletedMotions();
         }
@@ -262,7 +264,7 @@ public sealed partial class SimplePartArray : IPartArray
     /// <inheritdoc />
     /// <remarks>The motion table drops its link animations (retail <c>CPartArray::HandleEnterWorld</c>, which
     /// <c>CPhysicsObj::RemoveLinkAnimations</c> calls).</remarks>
-    public void HandleEnterWorld() => _motionTable?.RemoveLinkAnimations();
+    public void HandleEnterWorld() => _motionPlayer?.RemoveLinkAnimations();
 
     /// <inheritdoc />
     public Frame GetPartFrame(int index) => _frame;

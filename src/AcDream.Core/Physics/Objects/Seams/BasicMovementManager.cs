@@ -40,9 +40,9 @@ public sealed class BasicMovementManager : IMovementManager, IMotionInterpreter
 
     /// <inheritdoc />
     // retail: CMotionInterp::get_max_speed (acclient.c:343485), weenie_obj == null branch
-    public double GetMaxSpeed() => NoWeenieMaxSpeed;
+    public double MaxSpeed => NoWeenieMaxSpeed;
 
     /// <inheritdoc />
     // retail: CMotionInterp::get_adjusted_max_speed (acclient.c:343511), weenie_obj == null, not running
-    public double GetAdjustedMaxSpeed() => NoWeenieMaxSpeed;
+    public double AdjustedMaxSpeed => NoWeenieMaxSpeed;
 }

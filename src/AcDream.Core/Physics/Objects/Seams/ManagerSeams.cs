@@ -54,10 +54,10 @@ public interface IMovementManager
 public interface IMotionInterpreter
 {
     /// <summary>Largest speed the motion state allows, m/s (retail <c>CMotionInterp::get_max_speed</c>, acclient.c:343485).</summary>
-    double GetMaxSpeed();
+    double MaxSpeed { get; }
 
     /// <summary>Largest speed adjusted for the current run command, m/s (retail <c>CMotionInterp::get_adjusted_max_speed</c>, acclient.c:343511).</summary>
-    double GetAdjustedMaxSpeed();
+    double AdjustedMaxSpeed { get; }
 }
 
 /// <summary>Creates movement managers on demand, as retail's <c>MovementManager::Create</c> in <c>get_minterp</c>.</summary>

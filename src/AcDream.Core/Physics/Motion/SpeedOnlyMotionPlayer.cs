@@ -3,10 +3,11 @@ using System.Numerics;
 namespace AcDream.Core.Physics.Motion;
 
 /// <summary>
-/// A motion table for a client without the real ones: the locomotion cycles and modifiers of a humanoid at retail's own
-/// speeds, with no animations (every motion completes at once). Walk forward 3.12 m/s, run forward 4 m/s, side-step
+/// A speed-only stand-in for a motion-table player (<see cref="IMotionPlayer"/>), for a client without the real motion
+/// tables: not retail's table or its player, only the locomotion cycles and modifiers of a humanoid at retail's own speeds,
+/// with no animations (every motion completes at once). Walk forward 3.12 m/s, run forward 4 m/s, side-step
 /// 1.25 m/s and turn 1.5 rad/s, each times its speed, so the body moves exactly as fast as the interpreter's
-/// <see cref="MotionInterp.GetStateVelocity"/> says.
+/// <see cref="MotionInterp.StateVelocity"/> says.
 /// </summary>
 /// <remarks>
 /// <para>What is retail: the velocity and omega arithmetic of <c>add_motion</c> and <c>combine_motion</c>
@@ -25,7 +26,7 @@ namespace AcDream.Core.Physics.Motion;
 /// <c>MotionTableManager::PerformMovement</c> returns when <c>DoObjectMotion</c> / <c>StopObjectMotion</c> fail
 /// (acclient.c:330205–330240).</para>
 /// </remarks>
-public sealed class RetailSpeedMotionTable : IMotionTable
+public sealed class SpeedOnlyMotionPlayer : IMotionPlayer
 {
     /// <summary>Turn rate of <see cref="MotionCommand.TurnRight"/> at speed 1, rad/s: 1.5 (bits 0x3FC00000), the humanoid
     /// motion table's TurnRight omega as read from the installed data (data-derived, not a client constant).

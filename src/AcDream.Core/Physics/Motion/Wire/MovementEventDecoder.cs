@@ -1,7 +1,7 @@
 using System;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Motion.Wire;
 
 /// <summary>The header of a MovementEvent's movement data (retail <c>MovementManager::unpack_movement</c>).</summary>
 /// <param name="MovementType">0 = an interpreted motion state; 6..9 = move-to and turn-to (not decoded here).</param>

@@ -3,7 +3,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Motion.Wire;
 
 public static partial class MovementEventDecoder
 {

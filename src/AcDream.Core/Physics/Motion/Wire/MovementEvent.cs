@@ -1,7 +1,7 @@
 using System;
 using AcDream.Core.Physics.Objects;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Motion.Wire;
 
 /// <summary>
 /// Applies server MovementEvents (message 0xF74C) to an object's movement manager as retail's handler does

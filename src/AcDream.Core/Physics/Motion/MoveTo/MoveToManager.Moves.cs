@@ -3,7 +3,7 @@ using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Motion.MoveTo;
 
 // The move-to's entry points: the four moves, the target reports, and the movement manager's dispatch.
 public sealed partial class MoveToManager

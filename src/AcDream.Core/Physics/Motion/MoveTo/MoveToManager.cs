@@ -2,7 +2,7 @@ using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Motion.MoveTo;
 
 /// <summary>
 /// An object's move-to manager (retail <c>MoveToManager</c>, acclient.h:31473, PORTAL/canim/CMoveToManager.c): walks or

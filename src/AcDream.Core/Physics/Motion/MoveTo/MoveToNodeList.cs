@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Motion.MoveTo;
 
 /// <summary>One pending step of a move-to (retail <c>MoveToManager::MovementNode</c>, acclient.h:57702): move to the
 /// position (<see cref="MovementType.MoveToPosition"/>) or turn to <see cref="Heading"/>

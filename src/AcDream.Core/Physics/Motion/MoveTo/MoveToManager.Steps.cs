@@ -3,7 +3,7 @@ using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Motion.MoveTo;
 
 // The move-to's steps: starting, running and ending each pending step, and the per-step update.
 public sealed partial class MoveToManager

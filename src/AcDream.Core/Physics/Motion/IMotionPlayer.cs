@@ -3,15 +3,17 @@ using System.Numerics;
 namespace AcDream.Core.Physics.Motion;
 
 /// <summary>
-/// The seam between the motion interpreter and the animation: an object's motion-table manager, its motion table and the
-/// sequence they drive (retail <c>CPartArray::DoInterpretedMotion</c> -> <c>MotionTableManager::PerformMovement</c> ->
+/// The seam between the motion interpreter and the animation: what plays an object's motions (not the motion table, the data,
+/// which is <see cref="Animation.MotionTable"/>, retail <c>CMotionTable</c>, but a player of one): retail's motion-table
+/// manager, its motion table and the sequence they drive (retail <c>CPartArray::DoInterpretedMotion</c> -> <c>MotionTableManager::PerformMovement</c> ->
 /// <c>CMotionTable::GetObjectSequence</c>, which sets the sequence's velocity and omega from the motion data). The part
-/// array exposes it as <see cref="Objects.Parts.IPartArray.MotionTable"/> and moves the body by
+/// array exposes it as <see cref="Objects.Parts.IPartArray.MotionPlayer"/> and moves the body by
 /// <see cref="Velocity"/> and <see cref="Omega"/> each step (<c>CSequence::apply_physics</c>).
-/// <see cref="RetailSpeedMotionTable"/> is the built-in one; a client with the real motion tables plugs in its own.
+/// <see cref="Animation.MotionTablePlayer"/> plays a retail motion table read from its bytes; <see cref="SpeedOnlyMotionPlayer"/>
+/// is a stand-in that moves the body at retail's speeds without one; a client may plug in its own.
 /// </summary>
 /// <remarks>Called inside the tick: implementations must not allocate.</remarks>
-public interface IMotionTable
+public interface IMotionPlayer
 {
     /// <summary>Starts <paramref name="motion"/> (a style, substate, modifier or action) at <c>p.Speed</c>.</summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
@@ -38,7 +40,7 @@ public interface IMotionTable
 
     /// <summary>Reports done the started motions that wait for no animation (called before the finished motions are taken
     /// with <see cref="TryTakeCompletedMotion"/>). Does nothing by default: a table that completes each motion at once
-    /// (such as <see cref="RetailSpeedMotionTable"/>) has nothing to check.</summary>
+    /// (such as <see cref="SpeedOnlyMotionPlayer"/>) has nothing to check.</summary>
     // retail seam: CPartArray::CheckForCompletedMotions (acclient.c:325095) -> MotionTableManager::CheckForCompletedMotions
     void CheckForCompletedMotions()
     {
