@@ -1,7 +1,6 @@
 using System;
 using System.Buffers.Binary;
 using AcDream.Core.Physics.Data;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.Animation;

@@ -1,6 +1,5 @@
 using System;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Physics.Hooks;
 
 namespace AcDream.Core.Physics.Objects;
 

@@ -1,5 +1,4 @@
 using System;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 
