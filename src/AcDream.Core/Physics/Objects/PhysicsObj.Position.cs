@@ -1,3 +1,4 @@
+// PhysicsObj — placement and commit: set_frame, store_position, SetPosition, enter_world, SetPositionInternal(CTransition*).
 using System;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Sweep;

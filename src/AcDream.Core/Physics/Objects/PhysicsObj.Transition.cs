@@ -1,3 +1,4 @@
+// PhysicsObj — the object's retail sweep and placement: transition, SetPosition's placement, AdjustPosition, CheckPositionInternal.
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
