@@ -65,8 +65,9 @@ public sealed partial class PhysicsObj
         EndPoseRecord(startPose, start);
     }
 
-    /// <summary>One simulation step of <paramref name="quantum"/> seconds (active: move, sweep or set the frame, run the
-    /// managers; inactive: only particles and scripts).</summary>
+    /// <summary>One simulation step of <paramref name="quantum"/> seconds. Active: the next position
+    /// (<see cref="BeginStep"/>), the move there (<see cref="MoveToNextPosition"/>: a sweep and its commit, or the frame
+    /// alone), the managers (<see cref="UseManagers"/>); then, active or not, particles and scripts.</summary>
     // retail: CPhysicsObj::UpdateObjectInternal (acclient.c:322718)
     internal void UpdateObjectInternal(float quantum)
     {
@@ -85,111 +86,14 @@ public sealed partial class PhysicsObj
                 return;
             }
 
-            if ((_transientState & TransientState.CheckEthereal) != 0)
-            {
-                SetEtherealInternal(false);
-            }
-
-            JumpedThisFrame = false;
-            Position newPos = new(_position.ObjCellId, Frame.Identity);
-            UpdatePositionInternal(quantum, ref newPos.Frame);
+            BeginStep(quantum, out Position newPos);
             // non-retail: a hook removed the object from its world: no sweep, no commit, no shadows
             if (RemovedFromWorld)
             {
                 return;
             }
 
-            IPartArray? parts = _partArray;
-            if (parts is not null && (parts is SimplePartArray simple ? simple.NumSpheres : parts.NumSpheres) != 0)
-            {
-                if (VectorMath.AreEqual(newPos.Frame.Origin, _position.Frame.Origin, PhysicsGlobals.Epsilon))
-                {
-                    newPos.Frame.Origin = _position.Frame.Origin;
-                    StoreStepFrame(ref newPos.Frame);
-                    CachedVelocity = Vector3.Zero;
-                }
-                else
-                {
-                    if ((_state & PhysicsState.AlignPath) != 0)
-                    {
-                        Vector3 o = newPos.Frame.Origin;
-                        Vector3 p = _position.Frame.Origin;
-                        Vector3 diff = VectorMath.Normalize(new Vector3(o.X - p.X, o.Y - p.Y, o.Z - p.Z));
-                        newPos.Frame.SetVectorHeading(diff);
-                    }
-                    else if ((_state & PhysicsState.Sledding) != 0 && !VectorMath.IsZero(_velocity))
-                    {
-                        newPos.Frame.SetHeading((float)VelocityHeading(_velocity));
-                    }
-
-                    // non-retail: a scene without SceneEffects.Collision moves freely (retail: the transition)
-                    CollisionSweep sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Sweep : FreeSpaceSweep.Instance;
-                    ref TransitionResult scratch = ref World.EnterStepScratch();
-                    try
-                    {
-                        // retail: transit = transition(...); SetPositionInternal(transit). The retail sweep hands its
-                        // transition to the commit itself; any other sweep hands over its result.
-                        RetailSweep? retail = sweep as RetailSweep;
-                        Transition? transit = null;
-                        bool swept;
-                        if (retail is not null)
-                        {
-                            transit = SweepHoldingTransition(retail, _position, newPos, false);
-                            swept = transit is not null;
-                            if (swept)
-                            {
-                                RetailSweep.Fill(transit!, ref scratch);
-                            }
-                        }
-                        else
-                        {
-                            swept = sweep.SweepObject(this, _position, newPos, false, ref scratch);
-                        }
-
-                        if (swept)
-                        {
-                            // non-retail: the transition keeps its pool slot until the commit is done (retail gives it back
-                            // first), so a sweep or placement started from a collision report takes another slot
-                            try
-                            {
-                                Vector3 offset = _position.GetOffset(scratch.CurrentPosition);
-                                CachedVelocity = DivideByQuantum(offset, quantum);
-                                CommitTransitionInternal(scratch, retail, transit);
-                            }
-                            finally
-                            {
-                                if (transit is not null)
-                                {
-                                    retail!.Pool.Cleanup();
-                                }
-                            }
-                        }
-                        else
-                        {
-                            newPos.Frame.Origin = _position.Frame.Origin;
-                            StoreStepFrame(ref newPos.Frame);
-                            CachedVelocity = Vector3.Zero;
-                        }
-                    }
-                    finally
-                    {
-                        World.LeaveStepScratch();
-                    }
-                }
-            }
-            else
-            {
-                // No collision spheres: retail keeps the origin and takes only the new orientation.
-                if (Movement is null && (_transientState & TransientState.OnWalkable) != 0)
-                {
-                    _transientState &= ~TransientState.Active;
-                }
-
-                newPos.Frame.Origin = _position.Frame.Origin;
-                StoreStepFrame(ref newPos.Frame);
-                CachedVelocity = Vector3.Zero;
-            }
-
+            MoveToNextPosition(ref newPos, quantum);
             // non-retail: a collision listener removed the object from its world: its step ends here (its managers would act
             // on an object that refuses every mutator). The commit's shadow update tests only CellId for it.
             if (RemovedFromWorld)
@@ -197,23 +101,133 @@ public sealed partial class PhysicsObj
                 return;
             }
 
-            SceneEffects fx = World.Effects;
-            // non-retail: the scene's declared effects (retail runs all four managers)
-            if ((fx & SceneEffects.RootMotion) != 0)
-            {
-                DetectionManager?.CheckDetection();
-                TargetManager?.HandleTargetting();
-                Movement?.UseTime();
-                HandlePartArrayMovement();
-            }
-
-            // non-retail: the scene's declared effects (retail runs the position manager)
-            if ((fx & SceneEffects.Interpolation) != 0)
-            {
-                PositionManager?.UseTime();
-            }
+            UseManagers();
         }
 
+        UpdateParticlesAndScripts();
+    }
+
+    /// <summary>The step's start: the ethereal check, the jump flag cleared, and the next position built in the object's cell
+    /// (<see cref="UpdatePositionInternal"/>: root motion, position manager, integration, hooks).</summary>
+    // retail part: the first lines of the active branch of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void BeginStep(float quantum, out Position newPos)
+    {
+        if ((_transientState & TransientState.CheckEthereal) != 0)
+        {
+            SetEtherealInternal(false);
+        }
+
+        JumpedThisFrame = false;
+        newPos = new(_position.ObjCellId, Frame.Identity);
+        UpdatePositionInternal(quantum, ref newPos.Frame);
+    }
+
+    /// <summary>The move to <paramref name="newPos"/>: an object with collision spheres that moved turns along its path (AlignPath,
+    /// Sledding) and is swept there (<see cref="SweepAndCommit"/>); one that did not move, or has no spheres, keeps its origin
+    /// and takes the new orientation (<see cref="StayInPlace"/>).</summary>
+    // retail part: the sphere branch of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void MoveToNextPosition(ref Position newPos, float quantum)
+    {
+        IPartArray? parts = _partArray;
+        if (parts is null || (parts is SimplePartArray simple ? simple.NumSpheres : parts.NumSpheres) == 0)
+        {
+            // No collision spheres: retail keeps the origin and takes only the new orientation.
+            if (Movement is null && (_transientState & TransientState.OnWalkable) != 0)
+            {
+                _transientState &= ~TransientState.Active;
+            }
+
+            StayInPlace(ref newPos.Frame);
+            return;
+        }
+
+        if (VectorMath.AreEqual(newPos.Frame.Origin, _position.Frame.Origin, PhysicsGlobals.Epsilon))
+        {
+            StayInPlace(ref newPos.Frame);
+            return;
+        }
+
+        if ((_state & PhysicsState.AlignPath) != 0)
+        {
+            Vector3 o = newPos.Frame.Origin;
+            Vector3 p = _position.Frame.Origin;
+            Vector3 diff = VectorMath.Normalize(new Vector3(o.X - p.X, o.Y - p.Y, o.Z - p.Z));
+            newPos.Frame.SetVectorHeading(diff);
+        }
+        else if ((_state & PhysicsState.Sledding) != 0 && !VectorMath.IsZero(_velocity))
+        {
+            newPos.Frame.SetHeading((float)VelocityHeading(_velocity));
+        }
+
+        SweepAndCommit(ref newPos, quantum);
+    }
+
+    /// <summary>The sweep to <paramref name="newPos"/> and its commit, by the world's sweep (<see cref="CollisionSweep.SweepStep"/>
+    /// answers whether it moved the object); a failed sweep keeps the origin.</summary>
+    // retail part: transit = transition(...); SetPositionInternal(transit) of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void SweepAndCommit(ref Position newPos, float quantum)
+    {
+        // non-retail: a scene without SceneEffects.Collision moves freely (retail: the transition)
+        CollisionSweep sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Sweep : FreeSpaceSweep.Instance;
+        if (!sweep.SweepStep(this, newPos, quantum))
+        {
+            StayInPlace(ref newPos.Frame);
+        }
+    }
+
+    /// <summary>The step's sweep ended at <paramref name="transit"/> (held in <paramref name="sweep"/>'s pool): the velocity it
+    /// caused is cached and the transition committed, collisions and shadows with it.</summary>
+    // retail part: the velocity and SetPositionInternal(transit) of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    internal void CommitStep(RetailSweep sweep, Transition transit, float quantum)
+    {
+        CachedVelocity = DivideByQuantum(_position.GetOffset(transit.SpherePath.CurrPos), quantum);
+        CommitTransitionInternal(sweep, transit);
+    }
+
+    /// <summary>The step's sweep ended at <paramref name="result"/> (a sweep without a transition): the velocity it caused is
+    /// cached and the result committed.</summary>
+    // retail part: the velocity and SetPositionInternal(transit) of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    internal void CommitStep(in TransitionResult result, float quantum)
+    {
+        CachedVelocity = DivideByQuantum(_position.GetOffset(result.CurrentPosition), quantum);
+        CommitTransitionInternal(result);
+    }
+
+    /// <summary>The object keeps its origin and takes the new frame's orientation, with no velocity.</summary>
+    // retail part: the set_frame branches of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void StayInPlace(ref Frame newFrame)
+    {
+        newFrame.Origin = _position.Frame.Origin;
+        StoreStepFrame(ref newFrame);
+        CachedVelocity = Vector3.Zero;
+    }
+
+    /// <summary>The managers after the move: detection, targeting, movement and the part array's movement, then the position
+    /// manager.</summary>
+    // retail part: the managers' lines of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void UseManagers()
+    {
+        SceneEffects fx = World.Effects;
+        // non-retail: the scene's declared effects (retail runs all four managers)
+        if ((fx & SceneEffects.RootMotion) != 0)
+        {
+            DetectionManager?.CheckDetection();
+            TargetManager?.HandleTargetting();
+            Movement?.UseTime();
+            HandlePartArrayMovement();
+        }
+
+        // non-retail: the scene's declared effects (retail runs the position manager)
+        if ((fx & SceneEffects.Interpolation) != 0)
+        {
+            PositionManager?.UseTime();
+        }
+    }
+
+    /// <summary>Particles and scripts, every step, active or not.</summary>
+    // retail part: the last lines of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void UpdateParticlesAndScripts()
+    {
         // non-retail: the scene's declared effects (retail runs the particle and script managers)
         if ((World.Effects & SceneEffects.ParticlesAndScripts) != 0)
         {
@@ -321,6 +335,7 @@ public sealed partial class PhysicsObj
 
     // The step's shortcuts that keep retail's bits: the rotation of a repeated omega·dt, the store of the step's frame, and the
     // direct calls into the built-in part array.
+
     // The rotation (Frame::grotate's axis-angle quaternion) of the last omega·dt this object turned by, keyed by its bits:
     // with constant omega and step the displacement repeats, and the square root, division, sine and cosine are skipped.
     // The rotation is a function of the displacement's bits alone, so a hit gives what recomputing would.

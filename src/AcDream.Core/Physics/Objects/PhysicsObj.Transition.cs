@@ -147,9 +147,7 @@ public sealed partial class PhysicsObj
                 return SetPositionError.NoCell;
             }
 
-            var result = default(TransitionResult);
-            RetailSweep.Fill(t, ref result);
-            CommitTransitionInternal(result, sweep, t);
+            CommitTransitionInternal(sweep, t);
             return SetPositionError.Ok;
         }
         finally
