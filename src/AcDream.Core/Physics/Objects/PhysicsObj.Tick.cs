@@ -169,6 +169,8 @@ public sealed partial class PhysicsObj
     {
         // non-retail: a scene without SceneEffects.Collision moves freely (retail: the transition)
         CollisionSweep sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Sweep : FreeSpaceSweep.Instance;
+        // retail: transit = transition(...); SetPositionInternal(transit). The retail sweep hands its
+        // transition to the commit itself; any other sweep hands over its result.
         if (!sweep.SweepStep(this, newPos, quantum))
         {
             StayInPlace(ref newPos.Frame);

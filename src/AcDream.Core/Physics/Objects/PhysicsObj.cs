@@ -70,6 +70,16 @@ public sealed partial class PhysicsObj
     /// progress stops, and the object never lists itself in a cell again.</summary>
     internal bool RemovedFromWorld { get; set; }
 
+    /// <summary>
+    /// True once <see cref="PhysicsWorld.RemoveObject"/> has taken the object out of its world, for good; false from
+    /// <see cref="PhysicsWorld.CreateObject"/> until then, whether the object has been placed (<see cref="EnterWorld"/>) or not,
+    /// and whether it is in a cell or not (<see cref="CellId"/> 0: not yet placed, or sent to the lost cell).
+    /// </summary>
+    /// <remarks>A removed object is in no cell, has no transient state, cannot be added back and refuses every public mutator
+    /// (<see cref="InvalidOperationException"/>); its reads stay allowed. Read this in a callback that may have removed the
+    /// object (a hook, a collision or player listener, the step observer) before acting on it.</remarks>
+    public bool IsRemoved => RemovedFromWorld;
+
     /// <summary>The object's id (retail <c>id</c>).</summary>
     public uint Id { get; }
 
