@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
@@ -8,7 +9,6 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Support.Data;
 using AcDream.Core.Tests.Support.Shared;
 using BenchmarkDotNet.Attributes;
 

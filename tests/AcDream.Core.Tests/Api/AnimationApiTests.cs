@@ -1,10 +1,12 @@
 using System;
 using System.Linq;
 using System.Reflection;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Tests.Support.Data;
+using AcDream.Core.Physics.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Api;
 
@@ -24,11 +26,12 @@ public class AnimationApiTests
     [Fact]
     public void HooksAndClips_HaveNoPublicSetters()
     {
-        // Hooks and animations are shared by every object that plays them: a client reads them and cannot change them.
+        // Hooks and animations are shared by every object that plays them: a client reads them and cannot change them (the
+        // engine-run hooks too, internal as they are: a client sees them as AnimHook).
         Type[] types = typeof(AnimHook).Assembly.GetTypes()
-            .Where(t => t.IsPublic && (typeof(AnimHook).IsAssignableFrom(t) || t == typeof(AnimClip) || t == typeof(AnimFrame)))
+            .Where(t => typeof(AnimHook).IsAssignableFrom(t) || t == typeof(AnimClip) || t == typeof(AnimFrame))
             .ToArray();
-        Assert.True(types.Length >= 29);
+        Assert.True(types.Length >= 32);
         foreach (Type t in types)
         {
             foreach (PropertyInfo p in t.GetProperties(BindingFlags.Public | BindingFlags.Instance))
@@ -38,6 +41,26 @@ public class AnimationApiTests
 
             Assert.DoesNotContain(t.GetConstructors(BindingFlags.Public | BindingFlags.Instance), c => true);
         }
+    }
+
+    [Fact]
+    public void ListenerHooks_ArePublic_EngineRunHooksInternal()
+    {
+        // What IAnimHookListener.OnAnimHook receives (the hooks whose Execute notifies the listener) is public, with the
+        // fields retail reads; the hooks the engine executes itself (fades, scale, physics script, ethereal, omega, animation
+        // done) are internal.
+        string[] publicHooks = typeof(AnimHook).Assembly.GetExportedTypes()
+            .Where(t => typeof(AnimHook).IsAssignableFrom(t)).Select(t => t.Name).Order(StringComparer.Ordinal).ToArray();
+        Assert.Equal(new[]
+        {
+            "AnimHook", "AttackHook", "CreateBlockingParticleHook", "CreateParticleHook", "DefaultScriptHook", "DefaultScriptPartHook",
+            "DestroyParticleHook", "NoDrawHook", "NoOpHook", "ReplaceObjectHook", "SetLightHook", "SoundHook", "SoundTableHook",
+            "SoundTweakedHook", "StopParticleHook", "TextureVelocityHook", "TextureVelocityPartHook",
+        }, publicHooks);
+        Assert.False(typeof(ScaleHook).IsPublic);
+        Assert.False(typeof(FadeHook).IsPublic);
+        Assert.False(typeof(PartFadeHook).IsPublic);
+        Assert.False(typeof(AnimDoneHook).IsPublic);
     }
 
     [Fact]

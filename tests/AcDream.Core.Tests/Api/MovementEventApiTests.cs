@@ -1,11 +1,12 @@
 using System;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Retail.Motion;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Api;
 

@@ -73,8 +73,11 @@ public sealed partial class PublicSurfaceTests
         }
 
         SortedDictionary<string, (int Types, int Members)> actual = Count(typeof(PhysicsWorld).Assembly);
-        Assert.Equal(actual.Select(kv => $"{kv.Key} {kv.Value.Types} {kv.Value.Members}"),
-                     documented.Select(kv => $"{kv.Key} {kv.Value.Types} {kv.Value.Members}"));
+        // On a difference, the message carries the rows as they should read (to paste into the table).
+        string rows = string.Join(Environment.NewLine, actual.Select(kv => $"| `{kv.Key}` | {kv.Value.Types} | {kv.Value.Members:N0} |"));
+        Assert.True(actual.Select(kv => $"{kv.Key} {kv.Value.Types} {kv.Value.Members}")
+                          .SequenceEqual(documented.Select(kv => $"{kv.Key} {kv.Value.Types} {kv.Value.Members}")),
+                    $"docs/architecture.md's surface table differs from the assembly; the rows should read:{Environment.NewLine}{rows}");
 
         int types = actual.Values.Sum(v => v.Types), members = actual.Values.Sum(v => v.Members);
         string total = $"**{types} public types, {members:N0} public members**";

@@ -1,12 +1,12 @@
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Retail.Animation;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
 
 namespace AcDream.Core.Tests.Behavior;

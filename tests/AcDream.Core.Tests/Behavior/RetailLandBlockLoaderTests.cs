@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects;
@@ -8,6 +9,7 @@ using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Behavior;
 

@@ -1,9 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Tests.Retail.Animation;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
 
 namespace AcDream.Core.Tests.Stability;

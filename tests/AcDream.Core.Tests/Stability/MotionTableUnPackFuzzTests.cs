@@ -1,11 +1,11 @@
 using System;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Tests.Support;
-using AcDream.Core.Tests.Support.Data;
 using FsCheck;
 using FsCheck.Fluent;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Stability;
 

@@ -1,5 +1,6 @@
 using System;
-using AcDream.Core.Physics.Data;
+using AcDream.Core.Physics.Format;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Animation;
 
@@ -95,7 +96,7 @@ public sealed class AnimClip
             posFrames = numFrames == 0 ? Array.Empty<AFrame>() : new AFrame[numFrames];
             for (int i = 0; i < numFrames; i++)
             {
-                posFrames[i] = AFrame.Read(ref reader, "CAnimation pos_frame");
+                posFrames[i] = reader.ReadAFrame("CAnimation pos_frame");
             }
         }
 

@@ -1,5 +1,6 @@
 using System;
-using AcDream.Core.Physics.Data;
+using AcDream.Core.Physics.Format;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Animation;
 
@@ -43,7 +44,7 @@ public sealed class AnimFrame
         AFrame[] frames = numParts == 0 ? Array.Empty<AFrame>() : new AFrame[numParts];
         for (int i = 0; i < numParts; i++)
         {
-            frames[i] = AFrame.Read(ref reader, "AnimFrame part frame");
+            frames[i] = reader.ReadAFrame("AnimFrame part frame");
         }
 
         // Each hook is at least its type and direction words.

@@ -1,7 +1,7 @@
 using System;
 using System.Buffers.Binary;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Animation;
 
@@ -9,8 +9,9 @@ namespace AcDream.Core.Physics.Animation;
 /// An event carried by one frame of an animation (retail <c>CAnimHook</c>, CAnimHook.c): when a playing
 /// <see cref="AnimSequence"/> crosses the frame in a matching <see cref="Direction"/>, the hook is queued on the object
 /// (<see cref="PhysicsObj.AddAnimHook"/>) and runs in the object's next <c>process_hooks</c>. The physics hooks (scale,
-/// translucency, luminosity, diffusion, ethereal, omega, physics scripts, animation done) run in the library; the others
-/// are handed to <see cref="World.PhysicsWorld.AnimHookListener"/>.
+/// translucency, luminosity, diffusion, ethereal, omega, physics scripts, animation done) run in the library and are
+/// internal types; the others are public and handed to <see cref="World.PhysicsWorld.AnimHookListener"/>. The library reads
+/// hooks (as part of an animation) and writes none.
 /// </summary>
 /// <remarks>A hook belongs to its animation and is shared by every object that plays it: it holds no per-object state.</remarks>
 public abstract class AnimHook : IAnimHook
@@ -35,57 +36,6 @@ public abstract class AnimHook : IAnimHook
     // The hook's own fields (retail: the type's UnPack).
     private protected abstract void UnPackBody(ref RetailDataReader reader);
 
-    // The hook's own fields' packed size in bytes (retail: the type's pack_size).
-    private protected abstract int BodySize { get; }
-
-    // Writes the hook's own fields (retail: the type's Pack) at d[at..], advancing at.
-    private protected abstract void PackBody(Span<byte> d, ref int at);
-
-    /// <summary>
-    /// Writes the hook as <see cref="UnPackHook"/> reads it: type word, direction word, the type's fields, zero padding to a
-    /// multiple of four from the start of <paramref name="destination"/> (retail <c>CAnimHook::PackHook</c> and
-    /// <c>PackObj::ALIGN_PTR</c>); <see cref="PackSize"/> bytes from an offset that is a multiple of four. Too small a
-    /// destination is an <see cref="ArgumentException"/>, before anything is written.
-    /// </summary>
-    // retail: CAnimHook::PackHook (acclient.c:342153)
-    internal void PackHook(Span<byte> destination, ref int offset)
-    {
-        int size = 8 + BodySize;
-        int need = size + ((4 - ((offset + size) & 3)) & 3);
-        if (offset < 0 || destination.Length - offset < need)
-        {
-            throw new ArgumentException($"The hook needs {need} bytes from offset {offset}.", nameof(destination));
-        }
-
-        U32(destination, ref offset, (uint)HookType);
-        U32(destination, ref offset, (uint)(int)Direction);
-        PackBody(destination, ref offset);
-        while ((offset & 3) != 0)
-        {
-            destination[offset++] = 0;
-        }
-    }
-
-    private protected static void U32(Span<byte> d, ref int at, uint v)
-    {
-        BinaryPrimitives.WriteUInt32LittleEndian(d.Slice(at), v);
-        at += 4;
-    }
-
-    private protected static void F32(Span<byte> d, ref int at, float v) => U32(d, ref at, BitConverter.SingleToUInt32Bits(v));
-
-    // Frame::Pack: origin x, y, z, then w, x, y, z.
-    private protected static void FramePack(Span<byte> d, ref int at, in Spatial.Frame f)
-    {
-        F32(d, ref at, f.Origin.X);
-        F32(d, ref at, f.Origin.Y);
-        F32(d, ref at, f.Origin.Z);
-        F32(d, ref at, f.Qw);
-        F32(d, ref at, f.Qx);
-        F32(d, ref at, f.Qy);
-        F32(d, ref at, f.Qz);
-    }
-
     /// <summary>Hands the hook to the world's <see cref="IAnimHookListener"/>, if any (the client-side hooks' Execute).</summary>
     private protected void Notify(PhysicsObj obj) => obj.World.AnimHookListener?.OnAnimHook(obj, this);
 
@@ -107,19 +57,6 @@ public abstract class AnimHook : IAnimHook
         {
             start = this;
         }
-    }
-
-    /// <summary>The hook's packed size: type and direction words, its fields, padded to a multiple of four.</summary>
-    // retail: CAnimHook::PackSize (acclient.c:342142)
-    internal int PackSize()
-    {
-        int result = BodySize + 8;
-        if ((result & 3) != 0)
-        {
-            result += 4 - (result & 3);
-        }
-
-        return result;
     }
 
     /// <summary>

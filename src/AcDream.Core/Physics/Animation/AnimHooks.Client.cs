@@ -1,8 +1,7 @@
-using System;
 using System.Numerics;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Animation;
 
@@ -18,12 +17,6 @@ public sealed class NoOpHook : AnimHook
 
     /// <inheritdoc />
     public override AnimHookType HookType => AnimHookType.NoOp;
-
-    private protected override int BodySize => 0;
-
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-    }
 
     /// <inheritdoc />
     public override void Execute(PhysicsObj obj)
@@ -51,14 +44,6 @@ public sealed class SoundHook : AnimHook
     /// <summary>The sound's data id (retail <c>gid_</c>).</summary>
     public uint SoundId { get; private set; }
 
-    private protected override int BodySize => 4;
-
-    // retail: SoundTableHook::Pack (acclient.c:342224)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, SoundId);
-    }
-
     /// <inheritdoc />
     // retail: SoundHook::Execute (acclient.c:342187)
     public override void Execute(PhysicsObj obj) => Notify(obj);
@@ -80,14 +65,6 @@ public sealed class SoundTableHook : AnimHook
 
     /// <summary>The sound type (retail <c>sound_type_</c>).</summary>
     public uint SoundType { get; private set; }
-
-    private protected override int BodySize => 4;
-
-    // retail: SoundTableHook::Pack (acclient.c:342224)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, SoundType);
-    }
 
     /// <inheritdoc />
     // retail: SoundTableHook::Execute (acclient.c:342218)
@@ -125,17 +102,6 @@ public sealed class SoundTweakedHook : AnimHook
     /// <summary>Volume (retail <c>vol</c>).</summary>
     public float Volume { get; private set; }
 
-    private protected override int BodySize => 16;
-
-    // retail: SoundTweakedHook::Pack (acclient.c:343097)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, SoundId);
-        F32(d, ref at, Probability);
-        F32(d, ref at, Priority);
-        F32(d, ref at, Volume);
-    }
-
     /// <inheritdoc />
     // retail: SoundTweakedHook::Execute (acclient.c:342206)
     public override void Execute(PhysicsObj obj) => Notify(obj);
@@ -168,20 +134,6 @@ public sealed class AttackHook : AnimHook
 
     /// <summary>The attack cone (retail <c>attack_cone</c>).</summary>
     public AttackCone Cone { get; private set; }
-
-    private protected override int BodySize => 28;
-
-    // retail: AttackCone::Pack (acclient.c:342595)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, (uint)Cone.PartIndex);
-        F32(d, ref at, Cone.Left.X);
-        F32(d, ref at, Cone.Left.Y);
-        F32(d, ref at, Cone.Right.X);
-        F32(d, ref at, Cone.Right.Y);
-        F32(d, ref at, Cone.Radius);
-        F32(d, ref at, Cone.Height);
-    }
 
     /// <inheritdoc />
     // retail: AttackHook::Execute (acclient.c:342281)
@@ -221,45 +173,6 @@ public sealed class ReplaceObjectHook : AnimHook
 
     /// <summary>The new part's GfxObj data id (0x01000000 plus the packed value).</summary>
     public uint PartId { get; private set; }
-
-    // AnimPartChange::Pack (acclient.c:471681): the byte, then the id packed by Pack_AsDataIDOfKnownType (acclient.c:667688)
-    // as an offset from 0x01000000 (an id of 0 as offset 0): two bytes up to 0x3FFF, four up to 0x3FFFFFFF, none beyond.
-    private protected override int BodySize
-    {
-        get
-        {
-            uint offset = (PartId == 0 ? 0x01000000u : PartId) - 0x01000000u;
-            return 1 + (offset > 0x3FFF ? (offset > 0x3FFFFFFF ? 0 : 4) : 2);
-        }
-    }
-
-    // retail: AnimPartChange::Pack (acclient.c:471681)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        PackPartChange(d, ref at);
-    }
-
-    // AnimPartChange::Pack's fields: the part byte, then the id through Pack_AsDataIDOfKnownType.
-    // retail: Pack_AsDataIDOfKnownType (acclient.c:667688)
-    private void PackPartChange(Span<byte> d, ref int at)
-    {
-        d[at++] = (byte)PartIndex;
-        uint offset = (PartId == 0 ? 0x01000000u : PartId) - 0x01000000u;
-        if (offset > 0x3FFF)
-        {
-            if (offset <= 0x3FFFFFFF)
-            {
-                System.Buffers.Binary.BinaryPrimitives.WriteUInt16LittleEndian(d.Slice(at), (ushort)((offset >> 16) | 0x8000));
-                System.Buffers.Binary.BinaryPrimitives.WriteUInt16LittleEndian(d.Slice(at + 2), (ushort)offset);
-                at += 4;
-            }
-        }
-        else
-        {
-            System.Buffers.Binary.BinaryPrimitives.WriteUInt16LittleEndian(d.Slice(at), (ushort)offset);
-            at += 2;
-        }
-    }
 
     /// <inheritdoc />
     public override void Execute(PhysicsObj obj) => Notify(obj);
@@ -307,17 +220,6 @@ public class CreateParticleHook : AnimHook
     /// <summary>The emitter's id, to destroy or stop it later (retail <c>emitter_id</c>).</summary>
     public uint EmitterId { get; private set; }
 
-    private protected override int BodySize => 40;
-
-    // retail: CreateParticleHook::Pack (acclient.c:343189)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, EmitterInfoId);
-        U32(d, ref at, PartIndex);
-        FramePack(d, ref at, Offset);
-        U32(d, ref at, EmitterId);
-    }
-
     /// <inheritdoc />
     // retail: CreateParticleHook::Execute (acclient.c:342512)
     public override void Execute(PhysicsObj obj) => Notify(obj);
@@ -362,14 +264,6 @@ public sealed class DestroyParticleHook : AnimHook
     /// <summary>The emitter's id.</summary>
     public uint EmitterId { get; private set; }
 
-    private protected override int BodySize => 4;
-
-    // retail: NoDrawHook::Pack (acclient.c:342287)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, EmitterId);
-    }
-
     /// <inheritdoc />
     // retail: DestroyParticleHook::Execute (acclient.c:342535)
     public override void Execute(PhysicsObj obj) => Notify(obj);
@@ -390,14 +284,6 @@ public sealed class StopParticleHook : AnimHook
 
     /// <summary>The emitter's id.</summary>
     public uint EmitterId { get; private set; }
-
-    private protected override int BodySize => 4;
-
-    // retail: NoDrawHook::Pack (acclient.c:342287)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, EmitterId);
-    }
 
     /// <inheritdoc />
     // retail: StopParticleHook::Execute (acclient.c:342541)
@@ -420,14 +306,6 @@ public sealed class NoDrawHook : AnimHook
     /// <summary>True to hide the object (retail <c>_no_draw</c>, non-zero).</summary>
     public bool NoDraw { get; private set; }
 
-    private protected override int BodySize => 4;
-
-    // retail: NoDrawHook::Pack (acclient.c:342287)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, NoDraw ? 1u : 0u);
-    }
-
     /// <inheritdoc />
     // retail: NoDrawHook::Execute (acclient.c:342317)
     public override void Execute(PhysicsObj obj) => Notify(obj);
@@ -447,12 +325,6 @@ public sealed class DefaultScriptHook : AnimHook
     // DefaultScriptHook::GetType returns 17, folded with UIElement_GroupBox::GetUIElementType.
     // retail: UIElement_GroupBox::GetUIElementType (acclient.c:297797)
     public override AnimHookType HookType => AnimHookType.DefaultScript;
-
-    private protected override int BodySize => 0;
-
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-    }
 
     /// <inheritdoc />
     // retail: DefaultScriptHook::Execute (acclient.c:342329)
@@ -476,14 +348,6 @@ public sealed class DefaultScriptPartHook : AnimHook
 
     /// <summary>The part's index.</summary>
     public uint PartIndex { get; private set; }
-
-    private protected override int BodySize => 4;
-
-    // retail: NoDrawHook::Pack (acclient.c:342287)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, PartIndex);
-    }
 
     /// <inheritdoc />
     // retail: DefaultScriptPartHook::Execute (acclient.c:342323)
@@ -511,15 +375,6 @@ public sealed class TextureVelocityHook : AnimHook
 
     /// <summary>V speed.</summary>
     public float VSpeed { get; private set; }
-
-    private protected override int BodySize => 8;
-
-    // retail: TextureVelocityHook::Pack (acclient.c:342479)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        F32(d, ref at, USpeed);
-        F32(d, ref at, VSpeed);
-    }
 
     /// <inheritdoc />
     // retail: TextureVelocityHook::Execute (acclient.c:342583)
@@ -555,16 +410,6 @@ public sealed class TextureVelocityPartHook : AnimHook
     /// <summary>V speed.</summary>
     public float VSpeed { get; private set; }
 
-    private protected override int BodySize => 12;
-
-    // retail: TextureVelocityPartHook::Pack (acclient.c:342559)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, PartIndex);
-        F32(d, ref at, USpeed);
-        F32(d, ref at, VSpeed);
-    }
-
     /// <inheritdoc />
     // retail: TextureVelocityPartHook::Execute (acclient.c:342553)
     public override void Execute(PhysicsObj obj) => Notify(obj);
@@ -590,14 +435,6 @@ public sealed class SetLightHook : AnimHook
 
     /// <summary>True to turn the lights on (retail <c>_lights_on</c>, non-zero).</summary>
     public bool LightsOn { get; private set; }
-
-    private protected override int BodySize => 4;
-
-    // retail: NoDrawHook::Pack (acclient.c:342287)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, LightsOn ? 1u : 0u);
-    }
 
     /// <inheritdoc />
     // retail: SetLightHook::Execute (acclient.c:342589)

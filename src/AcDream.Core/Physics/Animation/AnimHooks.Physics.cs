@@ -1,12 +1,12 @@
-using System;
 using System.Numerics;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Animation;
 
-// The hooks the library runs itself (retail: their Execute calls CPhysicsObj's own setters). Each float they hand to a
+// The hooks the library runs itself (retail: their Execute calls CPhysicsObj's own setters). They are internal: no listener
+// receives them (a client walking AnimFrame.Hooks sees them as AnimHook, with their HookType). Each float they hand to a
 // setter is read finite (a scale also within InputLimits' scale domain), so that the setter, which refuses such values,
 // never throws from inside a tick.
 
@@ -15,7 +15,7 @@ namespace AcDream.Core.Physics.Animation;
 /// <see cref="TransparentHook"/>, <see cref="LuminousHook"/> and <see cref="DiffuseHook"/> carry (retail's linker folded their
 /// <c>Pack</c> and their <c>UnPack</c> into one function each).
 /// </summary>
-public abstract class FadeHook : AnimHook
+internal abstract class FadeHook : AnimHook
 {
     private readonly string _name;
 
@@ -29,16 +29,6 @@ public abstract class FadeHook : AnimHook
 
     /// <summary>Duration of the fade, seconds.</summary>
     public float Time { get; private set; }
-
-    private protected override int BodySize => 12;
-
-    // retail: DiffuseHook::Pack (acclient.c:342347)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        F32(d, ref at, Start);
-        F32(d, ref at, End);
-        F32(d, ref at, Time);
-    }
 
     // Folded by the linker with TransparentHook's, LuminousHook's, DiffuseHook's and TextureVelocityPartHook's UnPack:
     // three 32-bit words.
@@ -56,7 +46,7 @@ public abstract class FadeHook : AnimHook
 /// <see cref="TransparentPartHook"/>, <see cref="LuminousPartHook"/> and <see cref="DiffusePartHook"/> carry (retail's linker
 /// folded their <c>Pack</c> and their <c>UnPack</c> into one function each).
 /// </summary>
-public abstract class PartFadeHook : AnimHook
+internal abstract class PartFadeHook : AnimHook
 {
     private readonly string _name;
 
@@ -74,17 +64,6 @@ public abstract class PartFadeHook : AnimHook
     /// <summary>Duration of the fade, seconds.</summary>
     public float Time { get; private set; }
 
-    private protected override int BodySize => 16;
-
-    // retail: DiffusePartHook::Pack (acclient.c:342433)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, Part);
-        F32(d, ref at, Start);
-        F32(d, ref at, End);
-        F32(d, ref at, Time);
-    }
-
     // Folded by the linker with LuminousPartHook's and DiffusePartHook's UnPack: part, start, end, time.
     // retail: TransparentPartHook::UnPack (acclient.c:342394)
     private protected override void UnPackBody(ref RetailDataReader reader)
@@ -97,7 +76,7 @@ public abstract class PartFadeHook : AnimHook
 }
 
 /// <summary>Fades the object's translucency (retail <c>TransparentHook</c>: <c>CPhysicsObj::SetTranslucency2</c>).</summary>
-public sealed class TransparentHook : FadeHook
+internal sealed class TransparentHook : FadeHook
 {
     internal TransparentHook()
         : base(nameof(TransparentHook))
@@ -115,7 +94,7 @@ public sealed class TransparentHook : FadeHook
 }
 
 /// <summary>Fades one part's translucency (retail <c>TransparentPartHook</c>: <c>CPhysicsObj::SetPartTranslucency</c>).</summary>
-public sealed class TransparentPartHook : PartFadeHook
+internal sealed class TransparentPartHook : PartFadeHook
 {
     internal TransparentPartHook()
         : base(nameof(TransparentPartHook))
@@ -131,7 +110,7 @@ public sealed class TransparentPartHook : PartFadeHook
 }
 
 /// <summary>Fades the object's luminosity (retail <c>LuminousHook</c>: <c>CPhysicsObj::SetLuminosity</c>).</summary>
-public sealed class LuminousHook : FadeHook
+internal sealed class LuminousHook : FadeHook
 {
     internal LuminousHook()
         : base(nameof(LuminousHook))
@@ -147,7 +126,7 @@ public sealed class LuminousHook : FadeHook
 }
 
 /// <summary>Fades one part's luminosity (retail <c>LuminousPartHook</c>: <c>CPhysicsObj::SetPartLuminosity</c>).</summary>
-public sealed class LuminousPartHook : PartFadeHook
+internal sealed class LuminousPartHook : PartFadeHook
 {
     internal LuminousPartHook()
         : base(nameof(LuminousPartHook))
@@ -164,7 +143,7 @@ public sealed class LuminousPartHook : PartFadeHook
 }
 
 /// <summary>Fades the object's diffusion (retail <c>DiffuseHook</c>: <c>CPhysicsObj::SetDiffusion</c>).</summary>
-public sealed class DiffuseHook : FadeHook
+internal sealed class DiffuseHook : FadeHook
 {
     internal DiffuseHook()
         : base(nameof(DiffuseHook))
@@ -180,7 +159,7 @@ public sealed class DiffuseHook : FadeHook
 }
 
 /// <summary>Fades one part's diffusion (retail <c>DiffusePartHook</c>: <c>CPhysicsObj::SetPartDiffusion</c>).</summary>
-public sealed class DiffusePartHook : PartFadeHook
+internal sealed class DiffusePartHook : PartFadeHook
 {
     internal DiffusePartHook()
         : base(nameof(DiffusePartHook))
@@ -197,7 +176,7 @@ public sealed class DiffusePartHook : PartFadeHook
 
 /// <summary>Scales the object to <see cref="End"/> over <see cref="Time"/> seconds (retail <c>ScaleHook</c>:
 /// <c>CPhysicsObj::SetScale</c>).</summary>
-public sealed class ScaleHook : AnimHook
+internal sealed class ScaleHook : AnimHook
 {
     internal ScaleHook()
     {
@@ -213,15 +192,6 @@ public sealed class ScaleHook : AnimHook
 
     /// <summary>Duration, seconds (below EPSILON: at once).</summary>
     public float Time { get; private set; }
-
-    private protected override int BodySize => 8;
-
-    // retail: TextureVelocityHook::Pack (acclient.c:342479)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        F32(d, ref at, End);
-        F32(d, ref at, Time);
-    }
 
     /// <inheritdoc />
     // retail: ScaleHook::Execute (acclient.c:342473)
@@ -245,7 +215,7 @@ public sealed class ScaleHook : AnimHook
 
 /// <summary>Plays physics script <see cref="ScriptId"/> after a random pause up to <see cref="Pause"/> seconds (retail
 /// <c>CallPESHook</c>: <c>CPhysicsObj::CallPES</c>).</summary>
-public sealed class CallPesHook : AnimHook
+internal sealed class CallPesHook : AnimHook
 {
     internal CallPesHook()
     {
@@ -261,15 +231,6 @@ public sealed class CallPesHook : AnimHook
     /// <summary>The longest random pause before it plays, seconds (retail <c>pause</c>).</summary>
     public float Pause { get; private set; }
 
-    private protected override int BodySize => 8;
-
-    // retail: CallPESHook::Pack (acclient.c:343156)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, ScriptId);
-        F32(d, ref at, Pause);
-    }
-
     /// <inheritdoc />
     // retail: CallPESHook::Execute (acclient.c:342467)
     public override void Execute(PhysicsObj obj) => obj.CallPes(ScriptId, Pause);
@@ -283,7 +244,7 @@ public sealed class CallPesHook : AnimHook
 }
 
 /// <summary>Makes the object ethereal or tries to make it solid (retail <c>EtherealHook</c>: <c>CPhysicsObj::set_ethereal</c>).</summary>
-public sealed class EtherealHook : AnimHook
+internal sealed class EtherealHook : AnimHook
 {
     internal EtherealHook()
     {
@@ -294,14 +255,6 @@ public sealed class EtherealHook : AnimHook
 
     /// <summary>True to make the object ethereal (retail <c>ethereal</c>, non-zero).</summary>
     public bool Ethereal { get; private set; }
-
-    private protected override int BodySize => 4;
-
-    // retail: NoDrawHook::Pack (acclient.c:342287)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        U32(d, ref at, Ethereal ? 1u : 0u);
-    }
 
     /// <inheritdoc />
     // retail: EtherealHook::Execute (acclient.c:342311)
@@ -315,7 +268,7 @@ public sealed class EtherealHook : AnimHook
 
 /// <summary>Sets the object's angular velocity, rad/s in world axes (retail <c>SetOmegaHook</c>:
 /// <c>CPhysicsObj::set_omega</c>).</summary>
-public sealed class SetOmegaHook : AnimHook
+internal sealed class SetOmegaHook : AnimHook
 {
     internal SetOmegaHook()
     {
@@ -328,16 +281,6 @@ public sealed class SetOmegaHook : AnimHook
 
     /// <summary>The angular velocity set (retail <c>axis</c>).</summary>
     public Vector3 Axis { get; private set; }
-
-    private protected override int BodySize => 12;
-
-    // retail: SetOmegaHook::Pack (acclient.c:343230)
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-        F32(d, ref at, Axis.X);
-        F32(d, ref at, Axis.Y);
-        F32(d, ref at, Axis.Z);
-    }
 
     /// <inheritdoc />
     // retail: SetOmegaHook::Execute (acclient.c:342547)
@@ -358,7 +301,7 @@ public sealed class SetOmegaHook : AnimHook
 /// <summary>An animation of the sequence ended while link animations were queued (retail <c>AnimDoneHook</c>, fired by
 /// <c>CSequence::update_internal</c>): the object's part array is told (<c>CPhysicsObj::Hook_AnimDone</c>). Never read from
 /// data.</summary>
-public sealed class AnimDoneHook : AnimHook
+internal sealed class AnimDoneHook : AnimHook
 {
     internal AnimDoneHook()
     {
@@ -366,12 +309,6 @@ public sealed class AnimDoneHook : AnimHook
 
     /// <inheritdoc />
     public override AnimHookType HookType => AnimHookType.AnimDone;
-
-    private protected override int BodySize => 0;
-
-    private protected override void PackBody(Span<byte> d, ref int at)
-    {
-    }
 
     /// <inheritdoc />
     // retail: AnimDoneHook::Execute (acclient.c:342335)

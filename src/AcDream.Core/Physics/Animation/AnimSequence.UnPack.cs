@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Animation;
 

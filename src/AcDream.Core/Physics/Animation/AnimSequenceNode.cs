@@ -1,5 +1,6 @@
 using System;
-using AcDream.Core.Physics.Data;
+using AcDream.Core.Physics.Format;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Animation;
 

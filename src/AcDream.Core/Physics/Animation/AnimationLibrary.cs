@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Animation;
 
@@ -21,7 +22,7 @@ public sealed class AnimationLibrary : IAnimationSource
 
     /// <summary>Unpacks an animation entry's bytes (<see cref="AnimClip.UnPack(ReadOnlySpan{byte})"/>) and adds it.</summary>
     /// <returns>The animation added.</returns>
-    /// <exception cref="Data.RetailDataFormatException">The bytes are not an animation entry (nothing is added).</exception>
+    /// <exception cref="RetailDataFormatException">The bytes are not an animation entry (nothing is added).</exception>
     public AnimClip Add(ReadOnlySpan<byte> entry)
     {
         AnimClip animation = AnimClip.UnPack(entry);

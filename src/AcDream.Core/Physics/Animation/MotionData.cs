@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcDream.Core.Physics.Data;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Animation;
 

@@ -1,6 +1,6 @@
 using System;
 using System.Collections.Generic;
-using AcDream.Core.Physics.Data;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Animation;
 

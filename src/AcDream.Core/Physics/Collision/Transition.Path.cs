@@ -30,7 +30,7 @@ internal sealed partial class Transition
 
         offset = path.BeginPos.GetOffset(path.EndPos);
         double radius = path.LocalSphere[0].Radius;
-        double dist = Math.Sqrt((double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z);
+        double dist = VectorMath.Magnitude(offset);
         if ((ObjectInfo.State & ObjectInfoState.IsViewer) != 0)
         {
             if (dist <= PhysicsGlobals.Epsilon)

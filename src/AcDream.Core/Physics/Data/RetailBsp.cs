@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 
@@ -120,7 +121,7 @@ internal sealed class RetailBsp
     private int UnPack(ref RetailDataReader r, BspNodeType type, int depth)
     {
         int index = Reserve();
-        CollisionPlane plane = r.ReadPlane("BSP splitting plane");
+        CollisionPlane plane = CollisionPlane.UnPack(ref r, "BSP splitting plane");
         int pos = -1, neg = -1;
         switch (type)
         {
@@ -142,7 +143,7 @@ internal sealed class RetailBsp
         int first = _polyIndices.Count, count = 0;
         if (_kind != RetailBspKind.Cell)
         {
-            sphere = r.ReadSphere("BSP node sphere");
+            sphere = Sphere.UnPack(ref r, "BSP node sphere");
             if (_kind == RetailBspKind.Drawing)
             {
                 count = ReadPolyList(ref r, r.ReadCount("BSP node polygon count", 2));
@@ -168,7 +169,7 @@ internal sealed class RetailBsp
         if (_kind == RetailBspKind.Physics)
         {
             solid = r.ReadUInt32("BSP leaf solid") != 0;
-            sphere = r.ReadSphere("BSP leaf sphere");
+            sphere = Sphere.UnPack(ref r, "BSP leaf sphere");
             count = ReadPolyList(ref r, r.ReadCount("BSP leaf polygon count", 2));
         }
 
@@ -183,14 +184,14 @@ internal sealed class RetailBsp
     private int UnPackPortal(ref RetailDataReader r, int depth)
     {
         int index = Reserve();
-        CollisionPlane plane = r.ReadPlane("BSP portal plane");
+        CollisionPlane plane = CollisionPlane.UnPack(ref r, "BSP portal plane");
         int pos = UnPackChild(ref r, depth + 1);
         int neg = UnPackChild(ref r, depth + 1);
         Sphere sphere = default;
         int first = _polyIndices.Count, count = 0;
         if (_kind == RetailBspKind.Drawing)
         {
-            sphere = r.ReadSphere("BSP portal sphere");
+            sphere = Sphere.UnPack(ref r, "BSP portal sphere");
             uint numPolys = r.ReadUInt32("BSP portal polygon count");
             uint numPortals = r.ReadUInt32("BSP portal portal count");
             count = ReadPolyList(ref r, r.CheckCount(numPolys, "BSP portal polygon count", 2));

@@ -3,6 +3,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 

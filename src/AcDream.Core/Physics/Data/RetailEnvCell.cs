@@ -2,6 +2,7 @@ using System;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 

@@ -1,4 +1,5 @@
 using System;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 

@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 

@@ -1,6 +1,7 @@
 using System;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 

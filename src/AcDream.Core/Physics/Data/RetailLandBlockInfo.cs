@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 

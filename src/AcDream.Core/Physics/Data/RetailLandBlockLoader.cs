@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 

@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 
@@ -269,22 +270,22 @@ public sealed class RetailSetup
         var cyl = new CylSphere[numCyl];
         for (int i = 0; i < numCyl; i++)
         {
-            cyl[i] = r.ReadCylSphere("cylinder sphere");
+            cyl[i] = CylSphere.UnPack(ref r, "cylinder sphere");
         }
 
         int numSpheres = r.ReadCount("sphere count", 16);
         var spheres = new Sphere[numSpheres];
         for (int i = 0; i < numSpheres; i++)
         {
-            spheres[i] = r.ReadSphere("sphere");
+            spheres[i] = Sphere.UnPack(ref r, "sphere");
         }
 
         float height = r.ReadFiniteSingle("height");
         float radius = r.ReadFiniteSingle("radius");
         float stepUp = r.ReadFiniteSingle("step up height");
         float stepDown = r.ReadFiniteSingle("step down height");
-        Sphere sorting = r.ReadSphere("sorting sphere");
-        Sphere selection = r.ReadSphere("selection sphere");
+        Sphere sorting = Sphere.UnPack(ref r, "sorting sphere");
+        Sphere selection = Sphere.UnPack(ref r, "selection sphere");
         int numLights = r.ReadCount("light count", 48);
         var lights = new RetailLight[numLights];
         for (int i = 0; i < numLights; i++)

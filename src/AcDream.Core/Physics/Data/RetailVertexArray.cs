@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Data;
 

@@ -79,7 +79,7 @@ public sealed class ConstraintManager
             }
         }
 
-        ConstraintPosOffset = (float)(ManagerMath.Magnitude(offset.Origin) + ConstraintPosOffset);
+        ConstraintPosOffset = (float)(VectorMath.Magnitude(offset.Origin) + ConstraintPosOffset);
     }
 
     /// <summary>End-of-substep work: none.</summary>
@@ -98,7 +98,7 @@ public sealed class ConstraintManager
     public void ConstrainTo(in Position p, float startDistance, float maxDistance)
     {
         PhysicsObj.Touch();
-        if (!ManagerMath.IsUsable(p))
+        if (!InputLimits.IsPositionInDomain(p))
         {
             throw new ArgumentException("Position must have a finite origin and a valid rotation.", nameof(p));
         }
@@ -112,7 +112,7 @@ public sealed class ConstraintManager
         ConstraintPos = p;
         ConstraintDistanceStart = startDistance;
         ConstraintDistanceMax = maxDistance;
-        ConstraintPosOffset = (float)ManagerMath.Distance(p, PhysicsObj.Position);
+        ConstraintPosOffset = (float)p.DistanceInDouble(PhysicsObj.Position);
     }
 
     /// <summary>Stops constraining: lifts the constraint (the count is kept). Retail

@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Spatial;
 using System;
 using System.Collections.Generic;
 using AcDream.Core.Physics.Objects;
@@ -168,7 +169,7 @@ public sealed class DetectionManager : IDetectionManager
     internal DetectionStatus CheckDetection(DetectionCylsphere detcyl, PhysicsObj obj)
     {
         float radius = detcyl.Radius;
-        float distance = (float)ManagerMath.Distance(PhysicsObj.Position, obj.Position);
+        float distance = (float)PhysicsObj.Position.DistanceInDouble(obj.Position);
         double objRadius = obj.Radius;
         bool detected = detcyl.ObjectDetected;
         if (objRadius + radius <= distance)

@@ -44,7 +44,7 @@ public sealed partial class InterpolationManager
         }
 
         Position body = obj.Position;
-        double d = ManagerMath.Distance(body, head.Position);
+        double d = body.DistanceInDouble(head.Position);
         float currDistance = (float)d;
         if (d < DesiredDistance)
         {
@@ -95,7 +95,7 @@ public sealed partial class InterpolationManager
         // The head in the body's local frame, block-offset aware (Position::subtract2, acclient.c:388972).
         Frame adjustment = Position.RelativeFrame(head.Position, body);
         float progress = (float)(myMaxSpeed * quantum);
-        double adjustmentMagnitude = ManagerMath.Magnitude(adjustment.Origin);
+        double adjustmentMagnitude = VectorMath.Magnitude(adjustment.Origin);
         float adjustmentDistance = (float)adjustmentMagnitude;
         if (adjustmentMagnitude <= DesiredDistance)
         {
@@ -234,7 +234,7 @@ public sealed partial class InterpolationManager
             ref InterpolationNode next = ref Head;
             if (next.Type == InterpolationNodeType.Position)
             {
-                OriginalDistance = (float)ManagerMath.Distance(PhysicsObj.Position, next.Position);
+                OriginalDistance = (float)PhysicsObj.Position.DistanceInDouble(next.Position);
             }
             else if (!success)
             {

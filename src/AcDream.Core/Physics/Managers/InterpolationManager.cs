@@ -214,18 +214,18 @@ public sealed partial class InterpolationManager
     {
         // The newest queued Position is the reference; a Jump/Velocity tail or an empty queue measures from the body.
         double refDistance = _count > 0 && Tail.Type == InterpolationNodeType.Position
-            ? ManagerMath.Distance(Tail.Position, p)
-            : ManagerMath.Distance(body, p);
+            ? Tail.Position.DistanceInDouble(p)
+            : body.DistanceInDouble(p);
         float pa = (float)refDistance;
         if (PhysicsObj.AutonomyBlipDistance >= pa)
         {
-            if (ManagerMath.Distance(body, p) > DesiredDistance)
+            if (body.DistanceInDouble(p) > DesiredDistance)
             {
                 // Collapse trailing Position nodes that the new target supersedes (acclient.c:389062).
                 while (_count > 0)
                 {
                     ref InterpolationNode tail = ref Tail;
-                    if (tail.Type != InterpolationNodeType.Position || ManagerMath.Distance(tail.Position, p) >= DesiredDistance)
+                    if (tail.Type != InterpolationNodeType.Position || tail.Position.DistanceInDouble(p) >= DesiredDistance)
                     {
                         break;
                     }
@@ -285,7 +285,7 @@ public sealed partial class InterpolationManager
 
     private static void ThrowIfUnusable(in Position p, string name)
     {
-        if (!ManagerMath.IsUsable(p))
+        if (!InputLimits.IsPositionInDomain(p))
         {
             throw new ArgumentException("Position must have a finite origin and a valid rotation.", name);
         }

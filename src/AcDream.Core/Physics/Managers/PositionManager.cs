@@ -138,7 +138,7 @@ public sealed class PositionManager
 
     private static void ThrowIfUnusable(in Position p)
     {
-        if (!ManagerMath.IsUsable(p))
+        if (!InputLimits.IsPositionInDomain(p))
         {
             throw new System.ArgumentException("Position must be in the position domain (InputLimits).", nameof(p));
         }

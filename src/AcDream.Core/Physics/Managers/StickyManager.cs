@@ -92,7 +92,7 @@ public sealed class StickyManager
         // Position::cylinder_distance_no_z (acclient.c:467268) kept in double until the float store of mag.
         float r1 = obj.Radius;
         Vector3 between = body.GetOffset(targetPos);
-        double cyl = Math.Sqrt((double)between.X * between.X + (double)between.Y * between.Y + (double)between.Z * between.Z)
+        double cyl = VectorMath.Magnitude(between)
             - ((double)r1 + TargetRadius);
         float mag = (float)(cyl - StickyRadius);
 
@@ -194,7 +194,7 @@ public sealed class StickyManager
 
         if (info.Status == TargetStatus.Ok)
         {
-            if (!ManagerMath.IsUsable(info.TargetPosition))
+            if (!InputLimits.IsPositionInDomain(info.TargetPosition))
             {
                 throw new ArgumentException("Target position must have a finite origin and a valid rotation.", nameof(info));
             }

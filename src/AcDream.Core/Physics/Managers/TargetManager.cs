@@ -149,7 +149,7 @@ public sealed class TargetManager
     internal void CheckAndUpdateVoyeur(TargettedVoyeurInfo voyeur)
     {
         Position p = GetInterpolatedPosition(voyeur.Quantum);
-        if (ManagerMath.Distance(p, voyeur.LastSentPosition) > voyeur.Radius)
+        if (p.DistanceInDouble(voyeur.LastSentPosition) > voyeur.Radius)
         {
             SendVoyeurUpdate(voyeur, p, TargetStatus.Ok);
         }

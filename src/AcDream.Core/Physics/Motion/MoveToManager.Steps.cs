@@ -333,7 +333,7 @@ public sealed partial class MoveToManager
 
                 BeginNextNode();
             }
-            else if (ManagerMath.Distance(StartingPosition, obj.Position) > _movementParams.FailDistance)
+            else if (StartingPosition.DistanceInDouble(obj.Position) > _movementParams.FailDistance)
             {
                 CancelMoveTo(MotionError.YouChargedTooFar);
             }
@@ -341,7 +341,7 @@ public sealed partial class MoveToManager
 
         if (TopLevelObjectId != 0 && MovementType != MovementType.Invalid)
         {
-            double speed = ManagerMath.Magnitude(obj.CachedVelocity);
+            double speed = VectorMath.Magnitude(obj.CachedVelocity);
             if (speed > QuantumMinSpeed)
             {
                 double timeToGetThere = dist / speed;

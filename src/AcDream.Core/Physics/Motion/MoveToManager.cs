@@ -326,7 +326,7 @@ public sealed partial class MoveToManager
             return Position.CylinderDistance(r1, h1, obj.Position, r2, h2, CurrentTargetPosition);
         }
 
-        return ManagerMath.Distance(obj.Position, CurrentTargetPosition);
+        return obj.Position.DistanceInDouble(CurrentTargetPosition);
     }
 
     /// <summary>

@@ -1,4 +1,5 @@
 using System;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Motion;
 
@@ -42,7 +43,7 @@ public static partial class MovementEventDecoder
     {
         ArgumentNullException.ThrowIfNull(state);
         header = default;
-        var r = new Data.RetailDataReader(data, "MovementEvent");
+        var r = new RetailDataReader(data, "MovementEvent");
         try
         {
             ushort word = r.ReadUInt16("movement type and flags");
@@ -59,7 +60,7 @@ public static partial class MovementEventDecoder
             header = header with { StickToObject = stick };
             return r.Remaining == 0;
         }
-        catch (Data.RetailDataFormatException)
+        catch (RetailDataFormatException)
         {
             return false;
         }
@@ -81,7 +82,7 @@ public static partial class MovementEventDecoder
             return false;
         }
 
-        var r = new Data.RetailDataReader(data, "InterpretedMotionState");
+        var r = new RetailDataReader(data, "InterpretedMotionState");
         try
         {
             r.Skip(offset);
@@ -89,14 +90,14 @@ public static partial class MovementEventDecoder
             offset = r.Offset;
             return true;
         }
-        catch (Data.RetailDataFormatException)
+        catch (RetailDataFormatException)
         {
             return false;
         }
     }
 
     // retail: InterpretedMotionState::UnPack (acclient.c:333444), through the bounds-checked reader
-    internal static void UnpackInterpretedState(ref Data.RetailDataReader r, InterpretedMotionState state)
+    internal static void UnpackInterpretedState(ref RetailDataReader r, InterpretedMotionState state)
     {
         state.Reset();
         uint flags = r.ReadUInt32("InterpretedMotionState flags");
@@ -148,7 +149,7 @@ public static partial class MovementEventDecoder
     }
 
     // A 16-bit command index, through retail's command_ids table; an index past it is a format error.
-    private static MotionCommand ReadCommand(ref Data.RetailDataReader r, string what)
+    private static MotionCommand ReadCommand(ref RetailDataReader r, string what)
     {
         int at = r.Offset;
         ushort index = r.ReadUInt16(what);

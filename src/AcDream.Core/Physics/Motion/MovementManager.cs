@@ -249,7 +249,7 @@ public sealed class MovementManager : IMovementManager
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 7
     public void MoveToPosition(in Position position, in MovementParameters p)
     {
-        if (!Managers.ManagerMath.IsUsable(position))
+        if (!InputLimits.IsPositionInDomain(position))
         {
             throw new ArgumentException("Position must be in the position domain (InputLimits).", nameof(position));
         }

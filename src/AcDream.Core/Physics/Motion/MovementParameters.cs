@@ -1,5 +1,4 @@
 using System;
-using AcDream.Core.Physics.Data;
 
 namespace AcDream.Core.Physics.Motion;
 

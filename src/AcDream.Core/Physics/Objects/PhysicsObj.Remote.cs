@@ -159,7 +159,7 @@ public sealed partial class PhysicsObj
     public ReceivedPositionResult HandleReceivedPosition(in Position p, ushort positionTimestamp, ushort teleportTimestamp, bool hasContact)
     {
         ThrowIfRemoved();
-        if (!ManagerMath.IsUsable(p))
+        if (!InputLimits.IsPositionInDomain(p))
         {
             throw new ArgumentException("Position must have a finite origin and a valid rotation.", nameof(p));
         }
@@ -210,7 +210,7 @@ public sealed partial class PhysicsObj
         ThrowIfRemoved();
         // non-retail: an Ok report's positions must be usable before any manager acts on it (the move-to plans from both)
         if (info.Status == TargetStatus.Ok && info.ContextId == 0
-            && (!ManagerMath.IsUsable(info.TargetPosition) || !ManagerMath.IsUsable(info.InterpolatedPosition)))
+            && (!InputLimits.IsPositionInDomain(info.TargetPosition) || !InputLimits.IsPositionInDomain(info.InterpolatedPosition)))
         {
             throw new ArgumentException("An Ok report's target and interpolated positions must be in the position domain.",
                 nameof(info));

@@ -86,7 +86,7 @@ internal sealed partial class SceneTicker
         {
             Vector3 pv = seen.GetOffset(obj._position);
             s.PlayerVector = pv;
-            s.PlayerDistance = (float)Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+            s.PlayerDistance = (float)VectorMath.Magnitude(pv);
         }
     }
 

@@ -57,7 +57,7 @@ internal sealed partial class SceneTicker
                 {
                     // Near the boundary: decide with retail's own arithmetic (update_object's get_offset and double sqrt).
                     Vector3 pv = seen.GetOffset(queue.Object(h.Slot)._position);
-                    d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+                    d = VectorMath.Magnitude(pv);
                 }
 
                 bool isFar = d > PhysicsGlobals.PlayerActivityDistance;

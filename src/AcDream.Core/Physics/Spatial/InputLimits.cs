@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Collision.Primitives;
 
 namespace AcDream.Core.Physics.Spatial;
 
@@ -73,57 +72,13 @@ public static class InputLimits
     /// 19,200 m, within <see cref="MaxCoordinate"/>.</summary>
     public const float MaxStepHeight = LandDefs.BlockLength;
 
-    /// <summary>True when <paramref name="s"/> is a sphere the sweep can handle: finite centre, positive radius and
-    /// |centre| + radius &lt;= <see cref="MaxShapeReach"/> (computed in double).</summary>
-    internal static bool IsSphereInDomain(in Sphere s) =>
-        VectorMath.IsFinite(s.Center) && s.Radius > 0f && Length(s.Center) + s.Radius <= MaxShapeReach; // also NaN and ∞ radii
-
-    /// <summary>True when <paramref name="c"/> is a cylinder sphere the sweep can handle: finite low point, positive radius
-    /// and height, |low point| + radius + height &lt;= <see cref="MaxShapeReach"/> (computed in double).</summary>
-    internal static bool IsCylinderInDomain(in CylSphere c) =>
-        VectorMath.IsFinite(c.LowPt) && c.Radius > 0f && c.Height > 0f
-        && Length(c.LowPt) + c.Radius + (double)c.Height <= MaxShapeReach; // also NaN and ∞ sizes
-
     /// <summary>True when <paramref name="h"/> is a step height in [0, <see cref="MaxStepHeight"/>].</summary>
     internal static bool IsStepHeightInDomain(float h) => h >= 0f && h <= MaxStepHeight;
-
-    /// <summary>Throws when a sphere of <paramref name="spheres"/> is outside <see cref="IsSphereInDomain"/>.</summary>
-    /// <exception cref="ArgumentException">A sphere is outside the domain (the message names its index).</exception>
-    internal static void ThrowIfOutside(ReadOnlySpan<Sphere> spheres, string paramName)
-    {
-        for (int i = 0; i < spheres.Length; i++)
-        {
-            if (!IsSphereInDomain(spheres[i]))
-            {
-                throw new ArgumentException(string.Create(System.Globalization.CultureInfo.InvariantCulture,
-                    $"Sphere {i} needs a finite centre and a positive radius with |centre| + radius at most 192 m (InputLimits.MaxShapeReach)."),
-                    paramName);
-            }
-        }
-    }
-
-    /// <summary>Throws when a cylinder sphere of <paramref name="cylSpheres"/> is outside <see cref="IsCylinderInDomain"/>.</summary>
-    /// <exception cref="ArgumentException">A cylinder sphere is outside the domain (the message names its index).</exception>
-    internal static void ThrowIfOutside(ReadOnlySpan<CylSphere> cylSpheres, string paramName)
-    {
-        for (int i = 0; i < cylSpheres.Length; i++)
-        {
-            if (!IsCylinderInDomain(cylSpheres[i]))
-            {
-                throw new ArgumentException(string.Create(System.Globalization.CultureInfo.InvariantCulture,
-                    $"Cylinder sphere {i} needs a finite low point, a positive radius and height, and |low point| + radius + height at most 192 m (InputLimits.MaxShapeReach)."),
-                    paramName);
-            }
-        }
-    }
 
     /// <summary>Throws when <paramref name="h"/> is outside [0, <see cref="MaxStepHeight"/>].</summary>
     /// <exception cref="ArgumentException">The step height is NaN, negative or above 192 m.</exception>
     internal static float ThrowIfStepHeightOutside(float h, string paramName) =>
         IsStepHeightInDomain(h) ? h : throw new ArgumentException("Step heights must be in [0, 192] m (InputLimits.MaxStepHeight).", paramName);
-
-    // In double (not VectorMath.Length's float) so that the bound is decided on the exact sum.
-    private static double Length(Vector3 v) => Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
 
     /// <summary>True when <paramref name="cellId"/>'s low word is an outdoor cell (1..0x40) or the landblock (0xFFFF): the
     /// ids <c>store_position</c> re-homes to the outdoor cell under the origin.</summary>

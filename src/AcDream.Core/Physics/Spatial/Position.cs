@@ -65,9 +65,14 @@ public struct Position : IEquatable<Position>
         return new Vector3(x - Frame.Origin.X, (float)((double)b.Y + g.Y - Frame.Origin.Y), z - Frame.Origin.Z);
     }
 
-    /// <summary>Straight-line distance to <paramref name="p"/>, in metres.</summary>
+    /// <summary>Straight-line distance to <paramref name="p"/>, in metres (retail <c>Position::distance</c>, rounded to
+    /// float).</summary>
+    public readonly float Distance(in Position p) => (float)DistanceInDouble(p);
+
+    /// <summary><c>Position::distance</c> as retail evaluates it: the block-aware offset, then the square root of the sum of
+    /// squares in double (an x87 temporary), not rounded to float, because the managers compare the double.</summary>
     // retail: Position::distance (acclient.c:467031)
-    public readonly float Distance(in Position p) => VectorMath.Length(GetOffset(p));
+    internal readonly double DistanceInDouble(in Position p) => VectorMath.Magnitude(GetOffset(p));
 
     /// <summary>Horizontal (x, y) distance to <paramref name="p"/>, in metres.</summary>
     // retail: Position::xy_distance (acclient.c:467041)
@@ -178,7 +183,7 @@ public struct Position : IEquatable<Position>
     public static float CylinderDistance(float r1, float h1, in Position p1, float r2, float h2, in Position p2)
     {
         Vector3 off = p1.GetOffset(p2);
-        float radial = (float)(Math.Sqrt((double)off.X * off.X + (double)off.Y * off.Y + (double)off.Z * off.Z) - ((double)r1 + r2));
+        float radial = (float)(VectorMath.Magnitude(off) - ((double)r1 + r2));
         double top, bottom;
         if (p1.Frame.Origin.Z <= p2.Frame.Origin.Z)
         {
@@ -206,7 +211,7 @@ public struct Position : IEquatable<Position>
     public static float CylinderDistanceNoZ(float r1, in Position p1, float r2, in Position p2)
     {
         Vector3 off = p1.GetOffset(p2);
-        return (float)(Math.Sqrt((double)off.X * off.X + (double)off.Y * off.Y + (double)off.Z * off.Z) - ((double)r1 + r2));
+        return (float)(VectorMath.Magnitude(off) - ((double)r1 + r2));
     }
 
     /// <inheritdoc />

@@ -22,6 +22,11 @@ internal static class VectorMath
     /// <summary>Length sqrt(x² + y² + z²), evaluated in double and rounded to float.</summary>
     public static float Length(Vector3 v) => (float)Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
 
+    /// <summary>Length sqrt(x² + y² + z²) in double, not rounded to float (retail <c>AC1Legacy::Vector3::magnitude</c> as
+    /// its callers use the x87 result).</summary>
+    // retail: AC1Legacy::Vector3::magnitude (acclient.c:143594)
+    public static double Magnitude(Vector3 v) => Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
+
     /// <summary>Dot product a·b, evaluated in double (x, y, z order) and rounded to float.</summary>
     public static float Dot(Vector3 a, Vector3 b) => (float)((double)a.X * b.X + (double)a.Y * b.Y + (double)a.Z * b.Z);
 

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Motion;
@@ -7,7 +8,6 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
 
 namespace AcDream.Core.Tests.Api.Animation;

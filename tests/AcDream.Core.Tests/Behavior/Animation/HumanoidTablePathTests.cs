@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Motion;
@@ -9,7 +10,6 @@ using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
-using AcDream.Core.Tests.Support.Data;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
 

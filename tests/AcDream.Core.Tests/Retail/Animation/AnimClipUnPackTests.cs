@@ -1,9 +1,12 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Fixtures.Animation;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Tests.Support.Data;
+using AcDream.Core.Physics.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Retail.Animation;
 
@@ -166,8 +169,8 @@ public class AnimClipUnPackTests
         Assert.Equal(0x01012345u, r2.PartId);
         Assert.Null(h);
         // Their packed sizes: 8 + 1 + 2 = 11 -> 12 for the short id, 8 + 1 + 4 = 13 -> 16 for the long one.
-        Assert.Equal(12, r.PackSize());
-        Assert.Equal(16, r2.PackSize());
+        Assert.Equal(12, AnimHookPack.PackSize(r));
+        Assert.Equal(16, AnimHookPack.PackSize(r2));
 
         // CAnimHook::PackHook (acclient.c:342153) writes every hook back to the very bytes it was read from.
         byte[] original = w.ToArray();
@@ -177,8 +180,8 @@ public class AnimClipUnPackTests
         for (AnimHook? p = frame.Hooks; p is not null; p = p.Next)
         {
             int before = at;
-            p.PackHook(packed, ref at);
-            Assert.Equal(p.PackSize(), at - before);
+            AnimHookPack.PackHook(p, packed, ref at);
+            Assert.Equal(AnimHookPack.PackSize(p), at - before);
         }
 
         Assert.Equal(packed.Length, at);
@@ -186,7 +189,7 @@ public class AnimClipUnPackTests
         Assert.Throws<ArgumentException>(() =>
         {
             int o = 0;
-            frame.Hooks!.Next!.PackHook(new byte[11], ref o); // a sound hook needs 12
+            AnimHookPack.PackHook(frame.Hooks!.Next!, new byte[11], ref o); // a sound hook needs 12
         });
     }
 
@@ -206,11 +209,11 @@ public class AnimClipUnPackTests
     public void PackSize_IsFieldsPlusTypeAndDirection_PaddedToFour()
     {
         // CAnimHook::PackSize (acclient.c:342142): pack_size + 8, rounded up to four.
-        Assert.Equal(8, new NoOpHook().PackSize());
-        Assert.Equal(16, new ScaleHook().PackSize());
-        Assert.Equal(36, new AttackHook().PackSize());
-        Assert.Equal(48, new CreateParticleHook().PackSize());
-        Assert.Equal(12, new ReplaceObjectHook().PackSize()); // 3 + 8 = 11 -> 12
+        Assert.Equal(8, AnimHookPack.PackSize(new NoOpHook()));
+        Assert.Equal(16, AnimHookPack.PackSize(new ScaleHook()));
+        Assert.Equal(36, AnimHookPack.PackSize(new AttackHook()));
+        Assert.Equal(48, AnimHookPack.PackSize(new CreateParticleHook()));
+        Assert.Equal(12, AnimHookPack.PackSize(new ReplaceObjectHook())); // 3 + 8 = 11 -> 12
     }
 
     public static TheoryData<string, byte[]> BadEntries => new()

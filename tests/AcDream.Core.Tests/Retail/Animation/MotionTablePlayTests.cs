@@ -11,7 +11,7 @@ using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
-using AcDream.Core.Tests.Support.Data;
+using AcDream.Core.Fixtures.Data;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail.Animation;

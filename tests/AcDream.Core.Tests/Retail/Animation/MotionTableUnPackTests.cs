@@ -1,10 +1,10 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Motion;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Retail.Animation;
 

@@ -1,9 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
 using static AcDream.Core.Tests.Retail.Animation.AnimTestSupport;
 

@@ -1,12 +1,13 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Retail.Data;
 

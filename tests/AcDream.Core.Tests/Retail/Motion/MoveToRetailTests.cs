@@ -1,10 +1,10 @@
 using System;
 using System.Buffers.Binary;
-using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Spatial;
 using Xunit;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Tests.Retail.Motion;
 

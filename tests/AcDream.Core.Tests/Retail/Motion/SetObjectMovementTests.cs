@@ -1,11 +1,11 @@
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail.Motion;

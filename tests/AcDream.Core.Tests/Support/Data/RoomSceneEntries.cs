@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Data;

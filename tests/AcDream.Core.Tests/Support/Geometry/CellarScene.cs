@@ -2,13 +2,13 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Numerics;
+using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Data;
-using AcDream.Core.Tests.Support.Data;
 using AcDream.Core.Tests.Support.Shared;
 
 namespace AcDream.Core.Tests.Support.Geometry;

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -23,6 +24,15 @@ public struct CollisionPlane : IEquatable<CollisionPlane>
     {
         N = n;
         D = d;
+    }
+
+    /// <summary>A plane: normal x, y, z then d (retail <c>Plane::UnPack</c> order, as <c>BSPNODE::UnPack</c> inlines it); a
+    /// NaN or infinity is a format error.</summary>
+    internal static CollisionPlane UnPack(ref RetailDataReader reader, string what)
+    {
+        Vector3 n = reader.ReadFiniteVector3(what);
+        float d = reader.ReadFiniteSingle(what);
+        return new CollisionPlane(n, d);
     }
 
     /// <summary>The signed distance of <paramref name="v"/> from the plane (for a unit normal): <c>N·v + d</c> in double,

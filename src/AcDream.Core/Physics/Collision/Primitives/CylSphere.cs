@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;
-using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -10,7 +10,7 @@ namespace AcDream.Core.Physics.Collision.Primitives;
 /// of its bottom, its height and its radius. Retail: <c>CCylSphere</c> (acclient.h, PORTAL/cgeometry/CCylSphere.c).
 /// </summary>
 /// <remarks>
-/// A setup's cylinder spheres are object-local and unscaled (<see cref="IPartCollision.CylSpheres"/>);
+/// A setup's cylinder spheres are object-local and unscaled (<see cref="Objects.Parts.IPartCollision.CylSpheres"/>);
 /// <see cref="IntersectsSphere(in Position, float, Transition)"/> scales and places one in the check position's
 /// landblock before testing. Arithmetic follows the decompilation (x87 temporaries in double).
 /// </remarks>
@@ -34,6 +34,37 @@ public partial struct CylSphere : IEquatable<CylSphere>
         LowPt = lowPt;
         Radius = radius;
         Height = height;
+    }
+
+    /// <summary>Retail <c>CCylSphere::UnPack</c> (acclient.c:361547): low point x, y, z, radius, then height (finite).</summary>
+    // retail: CCylSphere::UnPack (acclient.c:361547)
+    internal static CylSphere UnPack(ref RetailDataReader reader, string what)
+    {
+        Vector3 low = reader.ReadFiniteVector3(what);
+        float radius = reader.ReadFiniteSingle(what);
+        float height = reader.ReadFiniteSingle(what);
+        return new CylSphere(low, radius, height);
+    }
+
+    /// <summary>True when this is a cylinder sphere the sweep can handle: finite low point, positive radius and height,
+    /// |low point| + radius + height &lt;= <see cref="InputLimits.MaxShapeReach"/> (computed in double).</summary>
+    internal readonly bool IsInDomain =>
+        VectorMath.IsFinite(LowPt) && Radius > 0f && Height > 0f
+        && VectorMath.Magnitude(LowPt) + Radius + (double)Height <= InputLimits.MaxShapeReach; // also NaN and ∞ sizes
+
+    /// <summary>Throws when a cylinder sphere of <paramref name="cylSpheres"/> is outside <see cref="IsInDomain"/>.</summary>
+    /// <exception cref="ArgumentException">A cylinder sphere is outside the domain (the message names its index).</exception>
+    internal static void ThrowIfAnyOutside(ReadOnlySpan<CylSphere> cylSpheres, string paramName)
+    {
+        for (int i = 0; i < cylSpheres.Length; i++)
+        {
+            if (!cylSpheres[i].IsInDomain)
+            {
+                throw new ArgumentException(string.Create(System.Globalization.CultureInfo.InvariantCulture,
+                    $"Cylinder sphere {i} needs a finite low point, a positive radius and height, and |low point| + radius + height at most 192 m (InputLimits.MaxShapeReach)."),
+                    paramName);
+            }
+        }
     }
 
     /// <summary>

@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
@@ -83,7 +82,7 @@ public sealed partial class Polygon
     /// <summary>
     /// The moving sphere hits the polygon's front: <see cref="PolygonHitsSphereSlowButSure"/> and the movement goes into
     /// the face (<c>N · movement &lt; 0</c>). On any touch, <paramref name="struckPoly"/> is set to this polygon even when the
-    /// movement leaves the face (that is retail's negative-side hit, see <see cref="BspTree.FindCollisions"/>).
+    /// movement leaves the face (that is retail's negative-side hit, see <see cref="Bsp.BspTree.FindCollisions"/>).
     /// </summary>
     // retail: CPolygon::pos_hits_sphere (acclient.c:360493)
     public bool PosHitsSphere(in Sphere sphere, Vector3 movement, out Vector3 contactPoint, ref Polygon? struckPoly)

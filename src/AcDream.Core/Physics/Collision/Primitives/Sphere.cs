@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
 namespace AcDream.Core.Physics.Collision.Primitives;
 
@@ -21,6 +22,36 @@ public partial struct Sphere : IEquatable<Sphere>
     {
         Center = center;
         Radius = radius;
+    }
+
+    /// <summary>Retail <c>CSphere::UnPack</c> (acclient.c:334267): centre x, y, z then radius; a NaN or infinity is a format
+    /// error (the library's queries take finite spheres).</summary>
+    // retail: CSphere::UnPack (acclient.c:334267)
+    internal static Sphere UnPack(ref RetailDataReader reader, string what)
+    {
+        Vector3 c = reader.ReadFiniteVector3(what);
+        float r = reader.ReadFiniteSingle(what);
+        return new Sphere(c, r);
+    }
+
+    /// <summary>True when this is a sphere the sweep can handle: finite centre, positive radius and |centre| + radius &lt;=
+    /// <see cref="InputLimits.MaxShapeReach"/> (computed in double).</summary>
+    internal readonly bool IsInDomain =>
+        VectorMath.IsFinite(Center) && Radius > 0f && VectorMath.Magnitude(Center) + Radius <= InputLimits.MaxShapeReach; // also NaN and ∞ radii
+
+    /// <summary>Throws when a sphere of <paramref name="spheres"/> is outside <see cref="IsInDomain"/>.</summary>
+    /// <exception cref="ArgumentException">A sphere is outside the domain (the message names its index).</exception>
+    internal static void ThrowIfAnyOutside(ReadOnlySpan<Sphere> spheres, string paramName)
+    {
+        for (int i = 0; i < spheres.Length; i++)
+        {
+            if (!spheres[i].IsInDomain)
+            {
+                throw new ArgumentException(string.Create(System.Globalization.CultureInfo.InvariantCulture,
+                    $"Sphere {i} needs a finite centre and a positive radius with |centre| + radius at most 192 m (InputLimits.MaxShapeReach)."),
+                    paramName);
+            }
+        }
     }
 
     /// <summary>

@@ -34,8 +34,8 @@ public sealed class SetupPhysics
         float stepUpHeight, float stepDownHeight)
     {
         // non-retail: the shapes' and step heights' domains (see InputLimits.MaxShapeReach, MaxStepHeight)
-        InputLimits.ThrowIfOutside(spheres, nameof(spheres));
-        InputLimits.ThrowIfOutside(cylSpheres, nameof(cylSpheres));
+        Sphere.ThrowIfAnyOutside(spheres, nameof(spheres));
+        CylSphere.ThrowIfAnyOutside(cylSpheres, nameof(cylSpheres));
         Check(radius, nameof(radius));
         Check(height, nameof(height));
         InputLimits.ThrowIfStepHeightOutside(stepUpHeight, nameof(stepUpHeight));

@@ -86,7 +86,7 @@ public sealed partial class SimplePartArray : IPartCollision
     public void SetCylSpheres(ReadOnlySpan<CylSphere> cylSpheres)
     {
         // non-retail: the shapes' domain (see InputLimits.MaxShapeReach)
-        InputLimits.ThrowIfOutside(cylSpheres, nameof(cylSpheres));
+        CylSphere.ThrowIfAnyOutside(cylSpheres, nameof(cylSpheres));
 
         _cylSpheres = cylSpheres.ToArray();
         UpdateObstacleReach();

@@ -47,7 +47,7 @@ public sealed partial class SimplePartArray : IPartArray
     public void SetSpheres(ReadOnlySpan<Sphere> spheres)
     {
         // non-retail: the shapes' domain (a 1e7 m sphere made every later Tick throw)
-        InputLimits.ThrowIfOutside(spheres, nameof(spheres));
+        Sphere.ThrowIfAnyOutside(spheres, nameof(spheres));
 
         Owner?.Touch();
         _spheres = spheres.ToArray();

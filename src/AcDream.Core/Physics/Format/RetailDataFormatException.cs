@@ -1,6 +1,6 @@
 using System;
 
-namespace AcDream.Core.Physics.Data;
+namespace AcDream.Core.Physics.Format;
 
 /// <summary>
 /// The bytes handed to a retail-data unpacker are not the structure they claim to be: truncated, a count larger than the

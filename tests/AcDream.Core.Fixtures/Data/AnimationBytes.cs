@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Animation;
 
-namespace AcDream.Core.Tests.Support.Data;
+namespace AcDream.Core.Fixtures.Data;
 
 /// <summary>
 /// Writes an animation entry (data file type 0x03) to the decompiled layout, field by field: the entry's id, then

@@ -3,8 +3,9 @@ using System.Buffers.Binary;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Tests.Support.Data;
+namespace AcDream.Core.Fixtures.Data;
 
 /// <summary>
 /// Builds data-file entry bytes to the decompiled layouts, field by field (little-endian, as retail's <c>Pack</c> writes):

@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Spatial;
 
-namespace AcDream.Core.Tests.Support.Data;
+namespace AcDream.Core.Fixtures.Data;
 
 /// <summary>A polygon to write: its id, its vertex indices, stippling (4: no positive uvs stored) and sides type.</summary>
 internal sealed record PolyDef(short Id, ushort[] Vids, byte Stippling = 4, int Sides = 0);

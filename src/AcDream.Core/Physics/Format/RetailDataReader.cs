@@ -3,7 +3,7 @@ using System.Buffers.Binary;
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;
 
-namespace AcDream.Core.Physics.Data;
+namespace AcDream.Core.Physics.Format;
 
 /// <summary>
 /// A bounds-checked little-endian cursor over one data-file entry's bytes (after the dat container), the shared reader of
@@ -91,9 +91,33 @@ internal ref struct RetailDataReader
     }
 
     /// <summary>Retail <c>AFrame::UnPack</c> (acclient.c:467618) and <c>AFrame::IsValid</c> (467555) through
-    /// <see cref="Animation.AFrame"/>'s reader, as a library <see cref="Frame"/> (the rotation normalised by <c>set_rotate</c>):
+    /// <see cref="ReadAFrame"/>, as a library <see cref="Frame"/> (the rotation normalised by <c>set_rotate</c>):
     /// a NaN or infinite component, or |q|² further than 5 × 0.0002 from 1, is a format error.</summary>
-    public Frame ReadFrame(string what = "frame") => Animation.AFrame.Read(ref this, what).ToFrame();
+    public Frame ReadFrame(string what = "frame") => ReadAFrame(what).ToFrame();
+
+    /// <summary>Reads an <see cref="AFrame"/> (retail <c>AFrame::UnPack</c>, acclient.c:467618: origin x, y, z, then w, x, y,
+    /// z, kept as read) and checks it as <c>AFrame::IsValid</c> (acclient.c:467555) does. <see cref="AFrame"/> is in
+    /// <c>Spatial</c>, below this reader, so the reader reads it.</summary>
+    /// <exception cref="RetailDataFormatException">Truncated, a component NaN or infinite, or not a unit quaternion.
+    /// (Retail's <c>CAnimation::UnPack</c> ignores <c>AFrame::UnPack</c>'s FALSE; the library refuses the bytes.)</exception>
+    // retail: AFrame::UnPack (acclient.c:467618)
+    public AFrame ReadAFrame(string what)
+    {
+        int at = _offset;
+        Vector3 origin = ReadVector3(what);
+        float w = ReadSingle(what), x = ReadSingle(what), y = ReadSingle(what), z = ReadSingle(what);
+        if (!VectorMath.IsFinite(origin) || !float.IsFinite(w) || !float.IsFinite(x) || !float.IsFinite(y) || !float.IsFinite(z))
+        {
+            throw ErrorAt(at, $"{what} is not finite");
+        }
+
+        if (!AFrame.IsUnit(w, x, y, z))
+        {
+            throw ErrorAt(at, $"{what} rotation is not a unit quaternion");
+        }
+
+        return AFrame.FromChecked(origin, w, x, y, z);
+    }
 
     /// <summary>
     /// A 32-bit element count, checked before anything is sized by it: each element takes at least
@@ -156,35 +180,6 @@ internal ref struct RetailDataReader
         }
 
         return v;
-    }
-
-    /// <summary>A plane: normal x, y, z then d (retail <c>Plane::UnPack</c> order, as <c>BSPNODE::UnPack</c> inlines it);
-    /// a NaN or infinity is a format error.</summary>
-    public Collision.Primitives.CollisionPlane ReadPlane(string what)
-    {
-        Vector3 n = ReadFiniteVector3(what);
-        float d = ReadFiniteSingle(what);
-        return new Collision.Primitives.CollisionPlane(n, d);
-    }
-
-    /// <summary>Retail <c>CSphere::UnPack</c> (acclient.c:334267): centre x, y, z then radius; a NaN or infinity is a format
-    /// error (the library's queries take finite spheres).</summary>
-    // retail: CSphere::UnPack (acclient.c:334267)
-    public Collision.Primitives.Sphere ReadSphere(string what)
-    {
-        Vector3 c = ReadFiniteVector3(what);
-        float r = ReadFiniteSingle(what);
-        return new Collision.Primitives.Sphere(c, r);
-    }
-
-    /// <summary>Retail <c>CCylSphere::UnPack</c> (acclient.c:361547): low point x, y, z, radius, then height (finite).</summary>
-    // retail: CCylSphere::UnPack (acclient.c:361547)
-    public Collision.Primitives.CylSphere ReadCylSphere(string what)
-    {
-        Vector3 low = ReadFiniteVector3(what);
-        float radius = ReadFiniteSingle(what);
-        float height = ReadFiniteSingle(what);
-        return new Collision.Primitives.CylSphere(low, radius, height);
     }
 
     /// <summary>The bytes not yet read, without consuming them.</summary>

@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace AcDream.Core.Tests.Support.Data;
+namespace AcDream.Core.Fixtures.Data;
 
 /// <summary>
 /// A humanoid-like motion table's bytes (type 0x09), for driving a player through the real table path: the NonCombat style

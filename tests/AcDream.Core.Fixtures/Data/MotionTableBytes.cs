@@ -1,7 +1,7 @@
 using System.Collections.Generic;
 using System.Numerics;
 
-namespace AcDream.Core.Tests.Support.Data;
+namespace AcDream.Core.Fixtures.Data;
 
 /// <summary>One <c>MotionData</c> to write: its animations (id, low frame, high frame, framerate), velocity, omega and
 /// bitfield.</summary>

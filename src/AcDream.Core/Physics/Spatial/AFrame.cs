@@ -1,13 +1,12 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Spatial;
 
-namespace AcDream.Core.Physics.Animation;
+namespace AcDream.Core.Physics.Spatial;
 
 /// <summary>
 /// An origin and a rotation quaternion as a data file stores them, without the cached matrix of a <see cref="Frame"/>
 /// (retail <c>AFrame</c>): an animation's root-motion step (<c>pos_frames</c>) and each part's frame of an
-/// <see cref="AnimFrame"/>. The quaternion is kept exactly as read (not renormalised), as retail keeps it.
+/// <c>AnimFrame</c> (Animation). The quaternion is kept exactly as read (not renormalised), as retail keeps it.
 /// </summary>
 public readonly struct AFrame : IEquatable<AFrame>
 {
@@ -34,7 +33,7 @@ public readonly struct AFrame : IEquatable<AFrame>
         Qz = rotation.Z;
     }
 
-    // The reader's constructor: the values are checked by the caller.
+    // The reader's constructor: the values are checked by the caller (Format.RetailDataReader.ReadAFrame).
     private AFrame(Vector3 origin, float qw, float qx, float qy, float qz)
     {
         Origin = origin;
@@ -75,30 +74,11 @@ public readonly struct AFrame : IEquatable<AFrame>
         return f;
     }
 
-    /// <summary>Reads an AFrame from <paramref name="reader"/> (retail <c>AFrame::UnPack</c>, acclient.c:467618: origin x, y, z,
-    /// then w, x, y, z, kept as read) and checks it as <c>AFrame::IsValid</c> (acclient.c:467555) does.</summary>
-    /// <exception cref="Data.RetailDataFormatException">Truncated, a component NaN or infinite, or not a unit quaternion.
-    /// (Retail's <c>CAnimation::UnPack</c> ignores <c>AFrame::UnPack</c>'s FALSE; the library refuses the bytes.)</exception>
-    internal static AFrame Read(ref Data.RetailDataReader reader, string what)
-    {
-        int at = reader.Offset;
-        Vector3 origin = reader.ReadVector3(what);
-        float w = reader.ReadSingle(what), x = reader.ReadSingle(what), y = reader.ReadSingle(what), z = reader.ReadSingle(what);
-        if (!VectorMath.IsFinite(origin) || !float.IsFinite(w) || !float.IsFinite(x) || !float.IsFinite(y) || !float.IsFinite(z))
-        {
-            throw reader.ErrorAt(at, $"{what} is not finite");
-        }
-
-        if (!IsUnit(w, x, y, z))
-        {
-            throw reader.ErrorAt(at, $"{what} rotation is not a unit quaternion");
-        }
-
-        return new AFrame(origin, w, x, y, z);
-    }
+    // The reader's door (Format.RetailDataReader.ReadAFrame, retail AFrame::UnPack): values already checked.
+    internal static AFrame FromChecked(Vector3 origin, float qw, float qx, float qy, float qz) => new(origin, qw, qx, qy, qz);
 
     // AFrame::IsValid's norm test (acclient.c:467555): |q|² summed z, y, x, w in float, within 5 × EPSILON of 1 in double.
-    private static bool IsUnit(float w, float x, float y, float z)
+    internal static bool IsUnit(float w, float x, float y, float z)
     {
         float norm = z * z + y * y + x * x + w * w;
         return !(0.00019999999 * 5.0 < Math.Abs(norm - 1.0)) && !float.IsNaN(norm);

@@ -2,15 +2,16 @@ using System;
 using System.Buffers.Binary;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Data;
 
-namespace AcDream.Core.Physics.Data;
+namespace AcDream.Core.Fixtures.Data;
 
 /// <summary>
 /// Retail's BSP pack (<c>BSPNODE::PackChild</c> / <c>Pack</c>, <c>BSPLEAF::PackLeaf</c>, <c>BSPPORTAL::PackPortal</c> and their
 /// size functions): a <see cref="BspTree"/> written in the layout <see cref="RetailBsp"/> reads, depth first from the root, so
-/// a tree round-trips. As retail, a split node writes the children it has (not the ones its tag names), and a polygon list
-/// writes each polygon's <see cref="Polygon.PolyId"/> (retail's <c>poly_id</c>, which the unpack reads back as the index into
-/// the owner's list: the two agree in retail's data).
+/// a tree round-trips (the library ships the reader only; the writer lives here). As retail, a split node writes the children
+/// it has (not the ones its tag names), and a polygon list writes each polygon's <see cref="Polygon.PolyId"/> (retail's
+/// <c>poly_id</c>, which the unpack reads back as the index into the owner's list: the two agree in retail's data).
 /// </summary>
 internal static class RetailBspPack
 {
