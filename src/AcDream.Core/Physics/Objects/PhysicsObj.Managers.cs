@@ -196,6 +196,7 @@ public sealed partial class PhysicsObj
     internal void CancelMoveTo() => Movement?.CancelMoveTo(StickyManager.UnstickMoveToError);
 
     // The setup check: what keeps the object from walking (not retail; a client's diagnostic).
+
     /// <summary>Largest step height that counts as "no Setup" (retail's 0.01 f default, acclient.c:325399).</summary>
     private const float NoSetupStepHeight = 0.0099999998f;
 

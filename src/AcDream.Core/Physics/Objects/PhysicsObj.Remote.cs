@@ -123,6 +123,7 @@ public sealed partial class PhysicsObj
     }
 
     // The remote-object update path and the sticky/target entry points of the position managers.
+
     /// <summary>
     /// Applies a server position report for an object the client does not control (the remote branch of retail's
     /// <c>SmartBox::HandleReceivedPosition</c>): a report whose position timestamp is not newer is dropped; one whose teleport
@@ -245,6 +246,7 @@ public sealed partial class PhysicsObj
 
     // The non-retail remote-smoothing modes of PhysicsProfile.RemoteSmoothing: snapping to each report and plain linear
     // extrapolation. Under the retail default none of this runs.
+
     /// <summary>Velocity (world axes, m/s) used by <see cref="RemoteSmoothing.LinearExtrapolation"/> since the last report;
     /// zero otherwise.</summary>
     public Vector3 ExtrapolationVelocity => _rare?.Extrapolation is { Extrapolating: true } e ? e.Velocity : Vector3.Zero;
