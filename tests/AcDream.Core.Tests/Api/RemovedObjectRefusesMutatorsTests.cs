@@ -5,7 +5,6 @@ using System.Numerics;
 using System.Reflection;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;

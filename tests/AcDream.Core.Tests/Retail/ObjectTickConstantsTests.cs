@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;

@@ -1,5 +1,4 @@
 using System.Numerics;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Objects.Seams;

@@ -4,7 +4,6 @@ using System.Linq;
 using System.Numerics;
 using System.Reflection;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;

@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;

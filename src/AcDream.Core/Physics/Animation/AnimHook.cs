@@ -1,6 +1,5 @@
 using System;
 using System.Buffers.Binary;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Format;
 

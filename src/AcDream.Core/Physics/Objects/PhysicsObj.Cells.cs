@@ -1,3 +1,4 @@
+// PhysicsObj — cells, parent and children: set_parent, unset_parent, UpdateChild, change_cell, enter_cell, leave_cell.
 using System;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;

@@ -1,3 +1,4 @@
+// PhysicsObj — the non-retail fidelity paths of PhysicsProfile (Arithmetic, RenormaliseEvery); no retail function.
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;

@@ -1,5 +1,6 @@
+// PhysicsObj — the hook list: add_anim_hook, process_hooks, process_fp_hook, Hook_AnimDone, SetScale, SetTranslucency, CallPES.
 using System;
-using AcDream.Core.Physics.Hooks;
+using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 
@@ -432,4 +433,17 @@ public sealed partial class PhysicsObj
             throw new ArgumentException("Hook values must be finite and durations within ±2^40 s.");
         }
     }
+
+    /// <summary>The sequence's AnimDone hook ran: the part array is told one animation finished.</summary>
+    // retail: CPhysicsObj::Hook_AnimDone (acclient.c:317086)
+    internal void HookAnimDone()
+    {
+        if (PartArray is IAnimationDoneTarget target)
+        {
+            target.AnimationDone(true);
+        }
+    }
+
+    /// <summary>The anim hooks waiting for the next <c>process_hooks</c>, in queue order (for tests and diagnostics).</summary>
+    internal ReadOnlySpan<IAnimHook?> PendingAnimHooks => _animHooks.AsSpan(0, _animHookCount);
 }

@@ -1,3 +1,4 @@
+// PhysicsObj — motion interpreter calls: MakeMovementManager, DoInterpretedMotion, StopCompletely_Internal, MotionDone.
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects.Seams;
 

@@ -1,3 +1,4 @@
+// PhysicsObj — the MovementEvent entry point: CPhysics::SetObjectMovement, unpack_movement; DoMotion, StopMotion.
 using System;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Spatial;

@@ -1,3 +1,4 @@
+// PhysicsObj — the object as an obstacle: FindObjCollisions, check_collision, ethereal_check_for_collisions.
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;

@@ -1,3 +1,4 @@
+// PhysicsObj — integration: UpdatePhysicsInternal, calc_acceleration, calc_friction, set_velocity, set_omega, set_active, set_ethereal.
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Sweep;

@@ -1,4 +1,6 @@
+// PhysicsObj — placement and commit: set_frame, store_position, SetPosition, enter_world, SetPositionInternal(CTransition*).
 using System;
+using System.Numerics;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Spatial;
@@ -247,30 +249,75 @@ public sealed partial class PhysicsObj
         }
 
         CutPose();
-        CommitTransitionInternal(t, null, null);
+        CommitTransitionInternal(t);
     }
 
     /// <summary>
-    /// The engine's commit (no domain check) of <paramref name="t"/>, which <paramref name="transit"/> of
-    /// <paramref name="sweep"/>'s pool produced, or, both null, a result without a transition (a client's sweep, a free-space
-    /// step). The transition's collisions are reported and its cells take the shadows; without one, see
-    /// <see cref="CommitTransition"/>.
+    /// The engine's commit (no domain check) of <paramref name="t"/>, a result without a transition (a client's sweep, a
+    /// free-space step): nothing to respond to; the world's sweep re-shadows the object where it stands
+    /// (<see cref="CollisionSweep.ShadowInPlace"/>). See <see cref="CommitTransition"/>.
     /// </summary>
     // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
-    internal void CommitTransitionInternal(in TransitionResult t, RetailSweep? sweep, Transition? transit)
+    internal void CommitTransitionInternal(in TransitionResult t)
+    {
+        Touch();
+        if (!CommitCellAndFrame(t.CurrentPosition, t.CurrentCellId))
+        {
+            return;
+        }
+
+        CommitContactPlane(t.ContactPlaneValid, t.ContactPlaneNormal, t.ContactPlaneD, t.ContactPlaneCellId, t.ContactPlaneIsWater);
+        CommitSlidingNormal(t.SlidingNormalValid, t.SlidingNormal);
+        // non-retail: a result without a transition has no collisions to respond to and no cells of its own: the object is
+        // shadowed where it stands (by a world that sweeps with a RetailSweep)
+        if (CellId != 0 && !RemovedFromWorld)
+        {
+            World.Sweep.ShadowInPlace(this);
+        }
+    }
+
+    /// <summary>
+    /// The engine's commit of <paramref name="transit"/>, a transition of <paramref name="sweep"/>'s pool, read where it ended
+    /// (its sphere path's current position and cell, its collision info): the object takes its cell, frame, contact plane and
+    /// sliding normal, the transition's collisions are reported and its cells take the shadows.
+    /// </summary>
+    // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
+    internal void CommitTransitionInternal(RetailSweep sweep, Transition transit)
     {
         Touch();
         bool prevOnWalkable = (_transientState & TransientState.OnWalkable) != 0;
         bool prevContact = (_transientState & TransientState.Contact) != 0;
-        if (t.CurrentCellId == 0)
+        SpherePath path = transit.SpherePath;
+        CollisionInfo ci = transit.CollisionInfo;
+        if (!CommitCellAndFrame(path.CurrPos, path.CurrCell?.Id ?? 0))
         {
-            GoToLostCellInternal(t.CurrentPosition);
             return;
         }
 
-        if (CellId == t.CurrentCellId)
+        CommitContactPlane(ci.ContactPlaneValid, ci.ContactPlane.N, ci.ContactPlane.D, ci.ContactPlaneCellId, ci.ContactPlaneIsWater);
+        CommitSlidingNormal(ci.SlidingNormalValid, ci.SlidingNormal);
+        HandleAllCollisions(sweep, ci, prevContact, prevOnWalkable);
+        // non-retail: a collision listener may have removed the object from its world: it casts no shadow any more
+        if (CellId != 0 && !RemovedFromWorld)
         {
-            uint id = t.CurrentPosition.ObjCellId;
+            UpdateCellShadows(sweep, transit);
+        }
+    }
+
+    /// <summary>The commit's cell and frame: a position in no cell (<paramref name="cellId"/> 0) sends the object to the lost
+    /// cell (false); otherwise it takes the cell (changing cells when it is another) and the frame.</summary>
+    // retail part: the cell and frame lines of CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c line 322503)
+    private bool CommitCellAndFrame(in Position pos, uint cellId)
+    {
+        if (cellId == 0)
+        {
+            GoToLostCellInternal(pos);
+            return false;
+        }
+
+        if (CellId == cellId)
+        {
+            uint id = pos.ObjCellId;
             _position.ObjCellId = id;
             if ((_state & PhysicsState.ParticleEmitter) == 0)
             {
@@ -281,14 +328,22 @@ public sealed partial class PhysicsObj
         }
         else
         {
-            ChangeCell(t.CurrentCellId);
+            ChangeCell(cellId);
         }
 
-        SetFrameInternal(t.CurrentPosition.Frame);
-        ContactPlaneCellId = t.ContactPlaneCellId;
-        ContactPlaneNormal = t.ContactPlaneNormal;
-        ContactPlaneD = t.ContactPlaneD;
-        if (t.ContactPlaneValid)
+        SetFrameInternal(pos.Frame);
+        return true;
+    }
+
+    /// <summary>The commit's contact plane: the plane stored, CONTACT, WATER_CONTACT and ON_WALKABLE set from it, the
+    /// acceleration recomputed (leaving the ground tells the movement manager).</summary>
+    // retail part: the contact-plane lines of CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c line 322503)
+    private void CommitContactPlane(bool valid, Vector3 normal, float d, uint cellId, bool isWater)
+    {
+        ContactPlaneCellId = cellId;
+        ContactPlaneNormal = normal;
+        ContactPlaneD = d;
+        if (valid)
         {
             _transientState |= TransientState.Contact;
         }
@@ -298,7 +353,7 @@ public sealed partial class PhysicsObj
         }
 
         CalcAcceleration();
-        if (t.ContactPlaneIsWater)
+        if (isWater)
         {
             _transientState |= TransientState.WaterContact;
         }
@@ -322,31 +377,20 @@ public sealed partial class PhysicsObj
 
             CalcAcceleration();
         }
+    }
 
-        SlidingNormal = t.SlidingNormal;
-        if (t.SlidingNormalValid)
+    /// <summary>The commit's sliding normal and SLIDING.</summary>
+    // retail part: the sliding lines of CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c line 322503)
+    private void CommitSlidingNormal(bool valid, Vector3 normal)
+    {
+        SlidingNormal = normal;
+        if (valid)
         {
             _transientState |= TransientState.Sliding;
         }
         else
         {
             _transientState &= ~TransientState.Sliding;
-        }
-
-        if (transit is not null)
-        {
-            HandleAllCollisions(sweep!, transit.CollisionInfo, prevContact, prevOnWalkable);
-            // non-retail: a collision listener may have removed the object from its world: it casts no shadow any more
-            if (CellId != 0 && !RemovedFromWorld)
-            {
-                UpdateCellShadows(sweep!, transit);
-            }
-        }
-        else if (CellId != 0 && !RemovedFromWorld && World.Sweep is RetailSweep cells)
-        {
-            // non-retail: a result without a transition has no collisions to respond to and no cells of its own: the
-            // object is shadowed where it stands
-            CalcCrossCells(cells);
         }
     }
 

@@ -1,12 +1,129 @@
+// PhysicsObj — remote objects: newer_event, MoveOrTeleport, teleport_hook, HandleReceivedPosition, stick_to_object; smoothing.
 using System;
+using System.Numerics;
 using AcDream.Core.Physics.Managers;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Objects;
 
 // The remote-object update path and the sticky/target entry points of the position managers.
 public sealed partial class PhysicsObj
 {
+    private UpdateTimeStamps _updateTimes;
+
+    /// <summary>Last accepted 16-bit timestamp of <paramref name="stamp"/> (retail <c>update_times</c>).</summary>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="stamp"/> is not a defined stamp.</exception>
+    public ushort GetUpdateTime(PhysicsTimeStamp stamp) => _updateTimes[StampIndex(stamp)];
+
+    private int StampIndex(PhysicsTimeStamp stamp) =>
+        (uint)stamp < (uint)UpdateTimeStamps.Count ? (int)stamp : throw new ArgumentOutOfRangeException(nameof(stamp));
+
+    /// <summary>
+    /// True when <paramref name="newTime"/> is newer than the stored stamp in 16-bit wrap-around order (a difference above
+    /// 0x7FFF means the counter wrapped); a newer stamp is stored.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
+    // retail: CPhysicsObj::newer_event (acclient.c:143014)
+    public bool NewerEvent(PhysicsTimeStamp stamp, ushort newTime)
+    {
+        ThrowIfRemoved();
+        ushort old = _updateTimes[StampIndex(stamp)];
+        bool newer = Math.Abs(newTime - old) > 0x7FFF ? newTime < old : old < newTime;
+        if (newer)
+        {
+            _updateTimes[(int)stamp] = newTime;
+        }
+
+        return newer;
+    }
+
+    /// <summary>
+    /// Applies a server position: a stale teleport stamp is ignored; a newer teleport (or an object with no cell) teleports;
+    /// otherwise, only with contact, an object at least 96 m from the player snaps there and a nearer one interpolates.
+    /// </summary>
+    /// <returns>True when the position was used.</returns>
+    /// <param name="p">The reported position: the position domain of <see cref="StorePosition"/> (unit quaternion; origin
+    /// within ±65,536 m, outdoor x, y in [−192, 384]).</param>
+    /// <param name="teleportTimestamp">The report's 16-bit teleport timestamp (any value; wrap-around order).</param>
+    /// <param name="contact">The report says the object is on the ground.</param>
+    /// <exception cref="ArgumentException">The position is outside that domain; state unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
+    // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450)
+    public bool MoveOrTeleport(in Position p, ushort teleportTimestamp, bool contact)
+    {
+        ThrowIfRemoved();
+        return MoveOrTeleportResult(p, teleportTimestamp, contact) >= ReceivedPositionResult.Interpolating;
+    }
+
+    // retail: CPhysicsObj::MoveOrTeleport (acclient.c:323450), answering which branch it took
+    private ReceivedPositionResult MoveOrTeleportResult(in Position p, ushort teleportTimestamp, bool contact)
+    {
+        InputLimits.ThrowIfOutside(p, nameof(p));
+        Touch();
+
+        ushort stored = _updateTimes[(int)PhysicsTimeStamp.Teleport];
+        bool older = Math.Abs(stored - teleportTimestamp) > 0x7FFF ? stored < teleportTimestamp : teleportTimestamp < stored;
+        if (older)
+        {
+            return ReceivedPositionResult.StaleTeleport;
+        }
+
+        if (NewerEvent(PhysicsTimeStamp.Teleport, teleportTimestamp) || CellId == 0)
+        {
+            bool loaded = World.Sweep.FindsCell(this, p);
+            TeleportHook();
+            return Placement(loaded, SetPosition(p, SetPositionFlags.Teleport | SetPositionFlags.Slide | SetPositionFlags.SendPositionEvent));
+        }
+
+        if (!contact)
+        {
+            return ReceivedPositionResult.NoContact;
+        }
+
+        bool cellLoaded = World.Sweep.FindsCell(this, p);
+        if (PlayerDistance >= PhysicsGlobals.PlayerActivityDistance)
+        {
+            PositionManager?.StopInterpolating();
+            return Placement(cellLoaded, SetPositionSimple(p, true));
+        }
+
+        // non-retail: fidelity switch PhysicsProfile.RemoteSmoothing; the retail profile runs InterpolateTo(p, IsMovingTo())
+        if (FollowRemoteReport(p, out SetPositionError placed))
+        {
+            return cellLoaded ? ReceivedPositionResult.Interpolating : ReceivedPositionResult.InterpolatingToUnloadedCell;
+        }
+
+        return Placement(cellLoaded, placed);
+    }
+
+    private static ReceivedPositionResult Placement(bool cellLoaded, SetPositionError e) =>
+        !cellLoaded ? ReceivedPositionResult.LeftWorld
+        : e == SetPositionError.Ok ? ReceivedPositionResult.Placed
+        : ReceivedPositionResult.PlacementFailed;
+
+    /// <summary>Drops every move-to, stickiness, interpolation, constraint and target before a teleport.</summary>
+    /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
+    // retail: CPhysicsObj::teleport_hook (acclient.c:322236)
+    public void TeleportHook()
+    {
+        ThrowIfRemoved();
+        Touch();
+        Movement?.CancelMoveTo(MotionError.ITeleported);
+        PositionManager?.StopSticking();
+        PositionManager?.StopInterpolating();
+        PositionManager?.StopConstraining();
+        if (TargetManager is { } tm)
+        {
+            tm.ClearTarget();
+            tm.NotifyVoyeurOfEvent(Managers.TargetStatus.Teleported);
+        }
+        World.Sweep.ReportCollisionEnd(this, true);
+    }
+
+    // The remote-object update path and the sticky/target entry points of the position managers.
+
     /// <summary>
     /// Applies a server position report for an object the client does not control (the remote branch of retail's
     /// <c>SmartBox::HandleReceivedPosition</c>): a report whose position timestamp is not newer is dropped; one whose teleport
@@ -125,5 +242,70 @@ public sealed partial class PhysicsObj
         float height = target.Height;
         float radius = target.Radius;
         pm.StickTo(target.Id, radius, height);
+    }
+
+    // The non-retail remote-smoothing modes of PhysicsProfile.RemoteSmoothing: snapping to each report and plain linear
+    // extrapolation. Under the retail default none of this runs.
+
+    /// <summary>Velocity (world axes, m/s) used by <see cref="RemoteSmoothing.LinearExtrapolation"/> since the last report;
+    /// zero otherwise.</summary>
+    public Vector3 ExtrapolationVelocity => _rare?.Extrapolation is { Extrapolating: true } e ? e.Velocity : Vector3.Zero;
+
+    // The in-range branch of MoveOrTeleport under the world's profile: retail interpolates (true); the other modes place the
+    // body (false, with the placement's result).
+    private bool FollowRemoteReport(in Position p, out SetPositionError placed)
+    {
+        RemoteSmoothing mode = World.Profile.RemoteSmoothing;
+        placed = SetPositionError.Ok;
+        if (mode == RemoteSmoothing.Retail)
+        {
+            InterpolateTo(p, IsMovingTo());
+            return true;
+        }
+
+        PositionManager?.StopInterpolating();
+        if (mode == RemoteSmoothing.LinearExtrapolation)
+        {
+            // Created at the object's first report in this mode (a network event, never inside the object's own update).
+            RareComponents rare = Rare(create: true)!;
+            Extrapolation e = rare.Extrapolation ??= new Extrapolation();
+            double now = World.CurrentTime;
+            double span = now - e.LastReportTime;
+            if (span > PhysicsGlobals.Epsilon)
+            {
+                Vector3 d = e.LastReport.GetOffset(p);
+                double inv = 1.0 / span;
+                e.Velocity = new Vector3((float)(d.X * inv), (float)(d.Y * inv), (float)(d.Z * inv));
+                e.Extrapolating = true;
+            }
+
+            e.LastReport = p;
+            e.LastReportTime = now;
+        }
+
+        placed = SetPositionSimple(p, true);
+        return false;
+    }
+
+    // LinearExtrapolation: replaces the step's offset origin (root motion) by the extrapolation velocity × quantum.
+    private void ApplyExtrapolation(ref Frame offset, float quantum)
+    {
+        Extrapolation? e = _rare?.Extrapolation;
+        if (e is null || !e.Extrapolating || World.Profile.RemoteSmoothing != RemoteSmoothing.LinearExtrapolation)
+        {
+            return;
+        }
+
+        Vector3 v = e.Velocity;
+        offset.Origin = _position.Frame.GlobalToLocalVec(new Vector3(v.X * quantum, v.Y * quantum, v.Z * quantum));
+    }
+
+    // LinearExtrapolation's state: the last report, its time (NaN before the first) and the velocity the last two gave.
+    private sealed class Extrapolation
+    {
+        public Position LastReport;
+        public double LastReportTime = double.NaN;
+        public Vector3 Velocity;
+        public bool Extrapolating;
     }
 }

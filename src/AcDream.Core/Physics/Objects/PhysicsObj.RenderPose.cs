@@ -1,3 +1,4 @@
+// PhysicsObj — render interpolation: the two last committed poses and the blend between them (not retail; no retail function).
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;

@@ -1,3 +1,4 @@
+// PhysicsObj — the scene's slot, the wake and the lazily evaluated bookkeeping (not retail; no retail function).
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Scene;
 

@@ -1,3 +1,4 @@
+// PhysicsObj — shadows: add_shadows_to_cells, remove_shadows_from_cells, add_particle_shadow_to_cell, calc_cross_cells.
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;

@@ -1,9 +1,10 @@
+// PhysicsObj — the object tick: update_object, UpdateObjectInternal and its steps, UpdatePositionInternal.
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Objects;
@@ -64,8 +65,9 @@ public sealed partial class PhysicsObj
         EndPoseRecord(startPose, start);
     }
 
-    /// <summary>One simulation step of <paramref name="quantum"/> seconds (active: move, sweep or set the frame, run the
-    /// managers; inactive: only particles and scripts).</summary>
+    /// <summary>One simulation step of <paramref name="quantum"/> seconds. Active: the next position
+    /// (<see cref="BeginStep"/>), the move there (<see cref="MoveToNextPosition"/>: a sweep and its commit, or the frame
+    /// alone), the managers (<see cref="UseManagers"/>); then, active or not, particles and scripts.</summary>
     // retail: CPhysicsObj::UpdateObjectInternal (acclient.c:322718)
     internal void UpdateObjectInternal(float quantum)
     {
@@ -84,111 +86,14 @@ public sealed partial class PhysicsObj
                 return;
             }
 
-            if ((_transientState & TransientState.CheckEthereal) != 0)
-            {
-                SetEtherealInternal(false);
-            }
-
-            JumpedThisFrame = false;
-            Position newPos = new(_position.ObjCellId, Frame.Identity);
-            UpdatePositionInternal(quantum, ref newPos.Frame);
+            BeginStep(quantum, out Position newPos);
             // non-retail: a hook removed the object from its world: no sweep, no commit, no shadows
             if (RemovedFromWorld)
             {
                 return;
             }
 
-            IPartArray? parts = _partArray;
-            if (parts is not null && (parts is SimplePartArray simple ? simple.NumSpheres : parts.NumSpheres) != 0)
-            {
-                if (VectorMath.AreEqual(newPos.Frame.Origin, _position.Frame.Origin, PhysicsGlobals.Epsilon))
-                {
-                    newPos.Frame.Origin = _position.Frame.Origin;
-                    StoreStepFrame(ref newPos.Frame);
-                    CachedVelocity = Vector3.Zero;
-                }
-                else
-                {
-                    if ((_state & PhysicsState.AlignPath) != 0)
-                    {
-                        Vector3 o = newPos.Frame.Origin;
-                        Vector3 p = _position.Frame.Origin;
-                        Vector3 diff = VectorMath.Normalize(new Vector3(o.X - p.X, o.Y - p.Y, o.Z - p.Z));
-                        newPos.Frame.SetVectorHeading(diff);
-                    }
-                    else if ((_state & PhysicsState.Sledding) != 0 && !VectorMath.IsZero(_velocity))
-                    {
-                        newPos.Frame.SetHeading((float)VelocityHeading(_velocity));
-                    }
-
-                    // non-retail: a scene without SceneEffects.Collision moves freely (retail: the transition)
-                    CollisionSweep sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Sweep : FreeSpaceSweep.Instance;
-                    ref TransitionResult scratch = ref World.EnterStepScratch();
-                    try
-                    {
-                        // retail: transit = transition(...); SetPositionInternal(transit). The retail sweep hands its
-                        // transition to the commit itself; any other sweep hands over its result.
-                        RetailSweep? retail = sweep as RetailSweep;
-                        Transition? transit = null;
-                        bool swept;
-                        if (retail is not null)
-                        {
-                            transit = SweepHoldingTransition(retail, _position, newPos, false);
-                            swept = transit is not null;
-                            if (swept)
-                            {
-                                RetailSweep.Fill(transit!, ref scratch);
-                            }
-                        }
-                        else
-                        {
-                            swept = sweep.SweepObject(this, _position, newPos, false, ref scratch);
-                        }
-
-                        if (swept)
-                        {
-                            // non-retail: the transition keeps its pool slot until the commit is done (retail gives it back
-                            // first), so a sweep or placement started from a collision report takes another slot
-                            try
-                            {
-                                Vector3 offset = _position.GetOffset(scratch.CurrentPosition);
-                                CachedVelocity = DivideByQuantum(offset, quantum);
-                                CommitTransitionInternal(scratch, retail, transit);
-                            }
-                            finally
-                            {
-                                if (transit is not null)
-                                {
-                                    retail!.Pool.Cleanup();
-                                }
-                            }
-                        }
-                        else
-                        {
-                            newPos.Frame.Origin = _position.Frame.Origin;
-                            StoreStepFrame(ref newPos.Frame);
-                            CachedVelocity = Vector3.Zero;
-                        }
-                    }
-                    finally
-                    {
-                        World.LeaveStepScratch();
-                    }
-                }
-            }
-            else
-            {
-                // No collision spheres: retail keeps the origin and takes only the new orientation.
-                if (Movement is null && (_transientState & TransientState.OnWalkable) != 0)
-                {
-                    _transientState &= ~TransientState.Active;
-                }
-
-                newPos.Frame.Origin = _position.Frame.Origin;
-                StoreStepFrame(ref newPos.Frame);
-                CachedVelocity = Vector3.Zero;
-            }
-
+            MoveToNextPosition(ref newPos, quantum);
             // non-retail: a collision listener removed the object from its world: its step ends here (its managers would act
             // on an object that refuses every mutator). The commit's shadow update tests only CellId for it.
             if (RemovedFromWorld)
@@ -196,23 +101,135 @@ public sealed partial class PhysicsObj
                 return;
             }
 
-            SceneEffects fx = World.Effects;
-            // non-retail: the scene's declared effects (retail runs all four managers)
-            if ((fx & SceneEffects.RootMotion) != 0)
-            {
-                DetectionManager?.CheckDetection();
-                TargetManager?.HandleTargetting();
-                Movement?.UseTime();
-                HandlePartArrayMovement();
-            }
-
-            // non-retail: the scene's declared effects (retail runs the position manager)
-            if ((fx & SceneEffects.Interpolation) != 0)
-            {
-                PositionManager?.UseTime();
-            }
+            UseManagers();
         }
 
+        UpdateParticlesAndScripts();
+    }
+
+    /// <summary>The step's start: the ethereal check, the jump flag cleared, and the next position built in the object's cell
+    /// (<see cref="UpdatePositionInternal"/>: root motion, position manager, integration, hooks).</summary>
+    // retail part: the first lines of the active branch of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void BeginStep(float quantum, out Position newPos)
+    {
+        if ((_transientState & TransientState.CheckEthereal) != 0)
+        {
+            SetEtherealInternal(false);
+        }
+
+        JumpedThisFrame = false;
+        newPos = new(_position.ObjCellId, Frame.Identity);
+        UpdatePositionInternal(quantum, ref newPos.Frame);
+    }
+
+    /// <summary>The move to <paramref name="newPos"/>: an object with collision spheres that moved turns along its path (AlignPath,
+    /// Sledding) and is swept there (<see cref="SweepAndCommit"/>); one that did not move, or has no spheres, keeps its origin
+    /// and takes the new orientation (<see cref="StayInPlace"/>).</summary>
+    // retail part: the sphere branch of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void MoveToNextPosition(ref Position newPos, float quantum)
+    {
+        IPartArray? parts = _partArray;
+        if (parts is null || (parts is SimplePartArray simple ? simple.NumSpheres : parts.NumSpheres) == 0)
+        {
+            // No collision spheres: retail keeps the origin and takes only the new orientation.
+            if (Movement is null && (_transientState & TransientState.OnWalkable) != 0)
+            {
+                _transientState &= ~TransientState.Active;
+            }
+
+            StayInPlace(ref newPos.Frame);
+            return;
+        }
+
+        if (VectorMath.AreEqual(newPos.Frame.Origin, _position.Frame.Origin, PhysicsGlobals.Epsilon))
+        {
+            StayInPlace(ref newPos.Frame);
+            return;
+        }
+
+        if ((_state & PhysicsState.AlignPath) != 0)
+        {
+            Vector3 o = newPos.Frame.Origin;
+            Vector3 p = _position.Frame.Origin;
+            Vector3 diff = VectorMath.Normalize(new Vector3(o.X - p.X, o.Y - p.Y, o.Z - p.Z));
+            newPos.Frame.SetVectorHeading(diff);
+        }
+        else if ((_state & PhysicsState.Sledding) != 0 && !VectorMath.IsZero(_velocity))
+        {
+            newPos.Frame.SetHeading((float)VelocityHeading(_velocity));
+        }
+
+        SweepAndCommit(ref newPos, quantum);
+    }
+
+    /// <summary>The sweep to <paramref name="newPos"/> and its commit, by the world's sweep (<see cref="CollisionSweep.SweepStep"/>
+    /// answers whether it moved the object); a failed sweep keeps the origin.</summary>
+    // retail part: transit = transition(...); SetPositionInternal(transit) of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void SweepAndCommit(ref Position newPos, float quantum)
+    {
+        // non-retail: a scene without SceneEffects.Collision moves freely (retail: the transition)
+        CollisionSweep sweep = (World.Effects & SceneEffects.Collision) != 0 ? World.Sweep : FreeSpaceSweep.Instance;
+        // retail: transit = transition(...); SetPositionInternal(transit). The retail sweep hands its
+        // transition to the commit itself; any other sweep hands over its result.
+        if (!sweep.SweepStep(this, newPos, quantum))
+        {
+            StayInPlace(ref newPos.Frame);
+        }
+    }
+
+    /// <summary>The step's sweep ended at <paramref name="transit"/> (held in <paramref name="sweep"/>'s pool): the velocity it
+    /// caused is cached and the transition committed, collisions and shadows with it.</summary>
+    // retail part: the velocity and SetPositionInternal(transit) of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    internal void CommitStep(RetailSweep sweep, Transition transit, float quantum)
+    {
+        CachedVelocity = DivideByQuantum(_position.GetOffset(transit.SpherePath.CurrPos), quantum);
+        CommitTransitionInternal(sweep, transit);
+    }
+
+    /// <summary>The step's sweep ended at <paramref name="result"/> (a sweep without a transition): the velocity it caused is
+    /// cached and the result committed.</summary>
+    // retail part: the velocity and SetPositionInternal(transit) of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    internal void CommitStep(in TransitionResult result, float quantum)
+    {
+        CachedVelocity = DivideByQuantum(_position.GetOffset(result.CurrentPosition), quantum);
+        CommitTransitionInternal(result);
+    }
+
+    /// <summary>The object keeps its origin and takes the new frame's orientation, with no velocity.</summary>
+    // retail part: the set_frame branches of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void StayInPlace(ref Frame newFrame)
+    {
+        newFrame.Origin = _position.Frame.Origin;
+        StoreStepFrame(ref newFrame);
+        CachedVelocity = Vector3.Zero;
+    }
+
+    /// <summary>The managers after the move: detection, targeting, movement and the part array's movement, then the position
+    /// manager.</summary>
+    // retail part: the managers' lines of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void UseManagers()
+    {
+        SceneEffects fx = World.Effects;
+        // non-retail: the scene's declared effects (retail runs all four managers)
+        if ((fx & SceneEffects.RootMotion) != 0)
+        {
+            DetectionManager?.CheckDetection();
+            TargetManager?.HandleTargetting();
+            Movement?.UseTime();
+            HandlePartArrayMovement();
+        }
+
+        // non-retail: the scene's declared effects (retail runs the position manager)
+        if ((fx & SceneEffects.Interpolation) != 0)
+        {
+            PositionManager?.UseTime();
+        }
+    }
+
+    /// <summary>Particles and scripts, every step, active or not.</summary>
+    // retail part: the last lines of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    private void UpdateParticlesAndScripts()
+    {
         // non-retail: the scene's declared effects (retail runs the particle and script managers)
         if ((World.Effects & SceneEffects.ParticlesAndScripts) != 0)
         {
@@ -316,5 +333,92 @@ public sealed partial class PhysicsObj
         }
 
         return HeadingMath.CompassFromAtan2(Math.Atan2(n.Y, n.X));
+    }
+
+    // The step's shortcuts that keep retail's bits: the rotation of a repeated omega·dt, the store of the step's frame, and the
+    // direct calls into the built-in part array.
+
+    // The rotation (Frame::grotate's axis-angle quaternion) of the last omega·dt this object turned by, keyed by its bits:
+    // with constant omega and step the displacement repeats, and the square root, division, sine and cosine are skipped.
+    // The rotation is a function of the displacement's bits alone, so a hit gives what recomputing would.
+    private int _rotationKeyX, _rotationKeyY, _rotationKeyZ;
+    private bool _rotationKnown;
+    private AxisAngle _rotation;
+
+    /// <summary>The rotation of <paramref name="w"/> (|w|² at least EPSILON²), from the one-entry cache when w repeats.</summary>
+    internal ref readonly AxisAngle StepRotation(Vector3 w)
+    {
+        int x = BitConverter.SingleToInt32Bits(w.X);
+        int y = BitConverter.SingleToInt32Bits(w.Y);
+        int z = BitConverter.SingleToInt32Bits(w.Z);
+        if (!_rotationKnown || x != _rotationKeyX || y != _rotationKeyY || z != _rotationKeyZ)
+        {
+            _rotationKnown = AxisAngle.TryCreate(w, out _rotation);
+            _rotationKeyX = x;
+            _rotationKeyY = y;
+            _rotationKeyZ = z;
+        }
+
+        return ref _rotation;
+    }
+
+    /// <summary>
+    /// <see cref="SetFrame"/> for the frame a step has just built (the object is awake: <see cref="UpdateObject"/> touched
+    /// it): the same checks, repair and stores, without the wake test and the extra copies, and with the built-in part
+    /// array's store called directly.
+    /// </summary>
+    /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged), as <see cref="SetFrame"/>.</exception>
+    // retail: CPhysicsObj::set_frame (acclient.c:321327), from UpdateObjectInternal (acclient.c:322718)
+    internal void StoreStepFrame(ref Frame frame)
+    {
+        ThrowIfNotFinite(frame.Origin, nameof(frame));
+        if (!frame.IsValid() && frame.IsValidExceptForHeading())
+        {
+            frame.SetQuaternionRaw(0f, 0f, 0f, 0f);
+        }
+
+        _position.Frame = frame;
+        if ((_state & PhysicsState.ParticleEmitter) == 0)
+        {
+            IPartArray? parts = _partArray;
+            if (parts is SimplePartArray simple)
+            {
+                simple.StoreCheckedFrame(frame);
+            }
+            else
+            {
+                parts?.SetFrame(frame);
+            }
+        }
+
+        UpdateChildrenInternal();
+    }
+
+    /// <summary>The part array's root motion for a step (the built-in part array called directly).</summary>
+    private void UpdatePartArray(float quantum, ref Frame offset)
+    {
+        IPartArray? parts = _partArray;
+        if (parts is SimplePartArray simple)
+        {
+            simple.Update(quantum, ref offset);
+        }
+        else
+        {
+            parts?.Update(quantum, ref offset);
+        }
+    }
+
+    /// <summary>The part array's movement notification for a step (the built-in part array called directly).</summary>
+    private void HandlePartArrayMovement()
+    {
+        IPartArray? parts = _partArray;
+        if (parts is SimplePartArray simple)
+        {
+            simple.HandleMovement();
+        }
+        else
+        {
+            parts?.HandleMovement();
+        }
     }
 }

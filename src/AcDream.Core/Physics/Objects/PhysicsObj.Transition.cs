@@ -1,3 +1,4 @@
+// PhysicsObj — the object's retail sweep and placement: transition, SetPosition's placement, AdjustPosition, CheckPositionInternal.
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
@@ -146,9 +147,7 @@ public sealed partial class PhysicsObj
                 return SetPositionError.NoCell;
             }
 
-            var result = default(TransitionResult);
-            RetailSweep.Fill(t, ref result);
-            CommitTransitionInternal(result, sweep, t);
+            CommitTransitionInternal(sweep, t);
             return SetPositionError.Ok;
         }
         finally

@@ -1,3 +1,4 @@
+// PhysicsObj — the object's state, construction and plain properties: CPhysicsObj (constructor), get_velocity.
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Managers;
@@ -14,29 +15,8 @@ namespace AcDream.Core.Physics.Objects;
 /// <see cref="PhysicsWorld"/>, which owns the clocks and the player the object reads while it updates.
 /// </summary>
 /// <remarks>
-/// <para>The class is split by concern, one partial file each (all in this folder):</para>
-/// <list type="bullet">
-/// <item><c>PhysicsObj.cs</c>: state, construction and the plain properties.</item>
-/// <item><c>PhysicsObj.Tick.cs</c>: update_object, UpdateObjectInternal, UpdatePositionInternal.</item>
-/// <item><c>PhysicsObj.Physics.cs</c>: UpdatePhysicsInternal, calc_acceleration, calc_friction, velocity and omega.</item>
-/// <item><c>PhysicsObj.Fidelity.cs</c>, <c>PhysicsObj.Smoothing.cs</c>: the non-retail fidelity and remote-smoothing paths of
-/// <see cref="PhysicsProfile"/>.</item>
-/// <item><c>PhysicsObj.Position.cs</c>: set_frame, SetPosition, SetPositionInternal (the commit), enter_world, store_position.</item>
-/// <item><c>PhysicsObj.Transition.cs</c>: transition (the retail sweep), the SetPosition placement, AdjustPosition,
-/// CheckPositionInternal.</item>
-/// <item><c>PhysicsObj.Collisions.cs</c>: the sweep flags (get_object_info) and check_contact.</item>
-/// <item><c>PhysicsObj.CollisionReports.cs</c>: handle_all_collisions and the report_*_collision family.</item>
-/// <item><c>PhysicsObj.CollisionRecords.cs</c>: the collision table.</item>
-/// <item><c>PhysicsObj.ObjectCollision.cs</c>: the object as an obstacle in another object's sweep (check_collision).</item>
-/// <item><c>PhysicsObj.Shadows.cs</c>: calc_cross_cells and the shadows in the cells it overlaps.</item>
-/// <item><c>PhysicsObj.Cells.cs</c>: enter_cell, leave_cell, change_cell, parent and children.</item>
-/// <item><c>PhysicsObj.Hooks.cs</c>: process_hooks, fades and animation hooks.</item>
-/// <item><c>PhysicsObj.Managers.cs</c>: the position manager and the manager seams.</item>
-/// <item><c>PhysicsObj.Network.cs</c>, <c>PhysicsObj.Remote.cs</c>: newer_event, MoveOrTeleport, teleport_hook and the remote
-/// update path.</item>
-/// <item><c>PhysicsObj.Scene.cs</c>: the scene's slot, <c>Touch</c> (the wake rule) and the lazily evaluated bookkeeping (not
-/// retail).</item>
-/// </list>
+/// <para>The class is split by concern into partial files in this folder; the first line of each <c>PhysicsObj.*.cs</c> names
+/// its concern and the retail functions it holds.</para>
 /// <para>Optional managers are null when absent and cost nothing. As in retail, an object enters a cell only when it has a
 /// part array (<c>CPhysicsObj::enter_cell</c>, acclient.c:318201; <see cref="EnterWorld"/> returns false without one), and
 /// update_object does nothing for an object with no cell: give every simulated object an <see cref="IPartArray"/> (e.g.
@@ -89,6 +69,16 @@ public sealed partial class PhysicsObj
     /// <summary>True once <see cref="PhysicsWorld.RemoveObject"/> took the object out of its world (for good): a step in
     /// progress stops, and the object never lists itself in a cell again.</summary>
     internal bool RemovedFromWorld { get; set; }
+
+    /// <summary>
+    /// True once <see cref="PhysicsWorld.RemoveObject"/> has taken the object out of its world, for good; false from
+    /// <see cref="PhysicsWorld.CreateObject"/> until then, whether the object has been placed (<see cref="EnterWorld"/>) or not,
+    /// and whether it is in a cell or not (<see cref="CellId"/> 0: not yet placed, or sent to the lost cell).
+    /// </summary>
+    /// <remarks>A removed object is in no cell, has no transient state, cannot be added back and refuses every public mutator
+    /// (<see cref="InvalidOperationException"/>); its reads stay allowed. Read this in a callback that may have removed the
+    /// object (a hook, a collision or player listener, the step observer) before acting on it.</remarks>
+    public bool IsRemoved => RemovedFromWorld;
 
     /// <summary>The object's id (retail <c>id</c>).</summary>
     public uint Id { get; }

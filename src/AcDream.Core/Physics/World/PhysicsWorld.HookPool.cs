@@ -1,4 +1,4 @@
-using AcDream.Core.Physics.Hooks;
+using AcDream.Core.Physics.Objects;
 
 namespace AcDream.Core.Physics.World;
 

@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;

@@ -4,7 +4,6 @@ using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
-using AcDream.Core.Physics.Hooks;
 using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;

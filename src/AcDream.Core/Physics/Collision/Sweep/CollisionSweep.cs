@@ -46,11 +46,45 @@ public abstract class CollisionSweep
     /// <paramref name="result"/> and returns true; on failure (blocked, or no transition available) returns false and
     /// the object keeps its origin.
     /// </summary>
-    /// <remarks>The tick commits the result (<see cref="PhysicsObj.CommitTransition"/>'s work) with no collision response: a
-    /// result carries no collisions, so a client sweep reports its own. <see cref="RetailSweep"/> is not called through here
-    /// by the tick: its transition goes to the commit itself, with its collisions and cells.</remarks>
+    /// <remarks>The tick (<see cref="SweepStep"/>) commits the result (<see cref="PhysicsObj.CommitTransition"/>'s work) with no
+    /// collision response: a result carries no collisions, so a client sweep reports its own. <see cref="RetailSweep"/> and
+    /// <see cref="FreeSpaceSweep"/> are not called through here by the tick: they answer <see cref="SweepStep"/> themselves.</remarks>
     // retail seam: CPhysicsObj::transition (acclient.c:320060); the retail sweep ports it as PhysicsObj.RunTransition
     public abstract bool SweepObject(PhysicsObj obj, in Position oldPos, in Position newPos, bool adminMove, ref TransitionResult result);
+
+    /// <summary>
+    /// The tick's sweep of one step: moves <paramref name="obj"/> from where it stands to <paramref name="newPos"/> and commits
+    /// where it ended, with the step's velocity (<paramref name="quantum"/> seconds) cached. False when the sweep failed: the
+    /// tick then keeps the object's origin. The base sweeps through <see cref="SweepObject"/> and commits its result;
+    /// <see cref="RetailSweep"/> commits its transition, <see cref="FreeSpaceSweep"/> the free-space answer.
+    /// </summary>
+    /// <remarks>Called once per swept step, so the tick never asks which sweep it holds.</remarks>
+    // retail seam: transit = CPhysicsObj::transition (acclient.c:320060); SetPositionInternal(transit) (acclient.c:322503)
+    internal virtual bool SweepStep(PhysicsObj obj, in Position newPos, float quantum)
+    {
+        ref TransitionResult result = ref obj.World.EnterStepScratch();
+        try
+        {
+            if (!SweepObject(obj, obj._position, newPos, false, ref result))
+            {
+                return false;
+            }
+
+            obj.CommitStep(result, quantum);
+            return true;
+        }
+        finally
+        {
+            obj.World.LeaveStepScratch();
+        }
+    }
+
+    /// <summary>Re-shadows <paramref name="obj"/> where it stands after a commit without a transition (a result carries no
+    /// cells of its own). The base keeps no shadows and does nothing; <see cref="RetailSweep"/> lists the object in the cells
+    /// it overlaps.</summary>
+    internal virtual void ShadowInPlace(PhysicsObj obj)
+    {
+    }
 
     /// <summary>
     /// Places <paramref name="obj"/> at <paramref name="pos"/> (retail <c>CPhysicsObj::SetPosition</c>, acclient.c:323289,

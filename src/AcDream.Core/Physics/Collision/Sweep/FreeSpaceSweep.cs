@@ -30,6 +30,16 @@ public sealed class FreeSpaceSweep : CollisionSweep
     }
 
     /// <inheritdoc />
+    /// <remarks>The free-space answer: the step ends where it was asked to, in the object's cell, and is committed.</remarks>
+    internal override bool SweepStep(PhysicsObj obj, in Position newPos, float quantum)
+    {
+        TransitionResult result = TransitionResult.FreeSpace(newPos);
+        result.CurrentCellId = obj.CellId;
+        obj.CommitStep(result, quantum);
+        return true;
+    }
+
+    /// <inheritdoc />
     public override SetPositionError SetPosition(PhysicsObj obj, in Position pos, SetPositionFlags flags)
     {
         Position p = pos;
@@ -40,7 +50,7 @@ public sealed class FreeSpaceSweep : CollisionSweep
         }
 
         TransitionResult t = TransitionResult.FreeSpace(p);
-        obj.CommitTransitionInternal(t, null, null);
+        obj.CommitTransitionInternal(t);
         return SetPositionError.Ok;
     }
 }

@@ -156,6 +156,32 @@ public sealed class RetailSweep : CollisionSweep
     }
 
     /// <inheritdoc />
+    /// <remarks>The transition itself is committed (its collisions reported, its cells shadowed); it keeps its pool slot until
+    /// the commit is done.</remarks>
+    // retail part: transit = transition(...); SetPositionInternal(transit) of CPhysicsObj::UpdateObjectInternal (acclient.c line 322718)
+    internal override bool SweepStep(PhysicsObj obj, in Position newPos, float quantum)
+    {
+        Transition? transit = obj.SweepHoldingTransition(this, obj._position, newPos, false);
+        if (transit is null)
+        {
+            return false;
+        }
+
+        // non-retail: the transition keeps its pool slot until the commit is done (retail gives it back first), so a sweep or
+        // placement started from a collision report takes another slot
+        try
+        {
+            obj.CommitStep(this, transit, quantum);
+        }
+        finally
+        {
+            Pool.Cleanup();
+        }
+
+        return true;
+    }
+
+    /// <inheritdoc />
     /// <remarks>Scatter placement (SCATTER / RANDOMSCATTER) and the weenie's forced cells are not ported.</remarks>
     /// <exception cref="ArgumentNullException"><paramref name="obj"/> is null.</exception>
     /// <exception cref="ArgumentException"><paramref name="pos"/> is outside the position domain (<see cref="InputLimits"/>);
@@ -177,6 +203,9 @@ public sealed class RetailSweep : CollisionSweep
         ArgumentNullException.ThrowIfNull(obj);
         obj.CalcCrossCells(this);
     }
+
+    /// <inheritdoc />
+    internal override void ShadowInPlace(PhysicsObj obj) => obj.CalcCrossCells(this);
 
     /// <inheritdoc />
     public override bool EtherealCheckForCollisions(PhysicsObj obj)

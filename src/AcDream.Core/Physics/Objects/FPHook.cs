@@ -1,7 +1,6 @@
-using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics.Hooks;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// A hook that interpolates one float linearly from <see cref="StartValue"/> to <see cref="EndValue"/> over

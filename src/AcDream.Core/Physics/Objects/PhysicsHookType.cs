@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics.Hooks;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// What a <see cref="PhysicsObjHook"/> drives (retail <c>PhysicsObjHook::HookType</c>, the cases of

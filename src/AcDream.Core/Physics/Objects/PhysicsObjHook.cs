@@ -1,7 +1,6 @@
-using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics.Hooks;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// A persistent per-object callback run once per simulation step until it reports done (retail <c>PhysicsObjHook</c>,

@@ -1,14 +1,92 @@
+// PhysicsObj — collision response: get_object_info, check_contact, handle_all_collisions, report_*_collision, the collision table.
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision;
+using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Objects;
 
-// The object's collision response after a retail sweep: the bounce, the stationary bits and the collision reports to
-// the listeners of the RetailSweep.
+// The object's side of the collision sweep: its sweep flags and its collision response.
 public sealed partial class PhysicsObj
 {
+    /// <summary>The object is in an ongoing collision with the environment (reported once until it ends). Retail:
+    /// <c>colliding_with_environment</c>.</summary>
+    public bool CollidingWithEnvironment { get; internal set; }
+
+    /// <summary>
+    /// The object's contact as seen by a sweep: false when it moves away from its contact plane faster than EPSILON.
+    /// </summary>
+    // retail: CPhysicsObj::check_contact (acclient.c:316535)
+    internal bool CheckContact(bool contact)
+    {
+        if ((_transientState & TransientState.Contact) != 0)
+        {
+            Vector3 n = ContactPlaneNormal;
+            if ((double)_velocity.Z * n.Z + (double)_velocity.Y * n.Y + (double)_velocity.X * n.X > PhysicsGlobals.Epsilon)
+            {
+                return false;
+            }
+        }
+
+        return contact;
+    }
+
+    /// <summary>
+    /// Seeds a transition with the object's contact state (unless <paramref name="adminMove"/>) and returns its sweep flags:
+    /// EDGE_SLIDE from <see cref="PhysicsState.EdgeSlide"/>, CONTACT / ON_WALKABLE while in contact and not lifting off,
+    /// PATH_CLIPPED for a missile.
+    /// </summary>
+    /// <remarks>FREE_ROTATE comes from the part array's <c>AllowsFreeHeading</c>, which the core's part array does not model
+    /// (always false).</remarks>
+    // retail: CPhysicsObj::get_object_info (acclient.c:319073)
+    internal ObjectInfoState GetObjectInfo(Transition transition, bool adminMove)
+    {
+        System.ArgumentNullException.ThrowIfNull(transition);
+        ObjectInfoState state = ObjectInfoState.None;
+        if ((_state & PhysicsState.EdgeSlide) != 0)
+        {
+            state = ObjectInfoState.EdgeSlide;
+        }
+
+        if (!adminMove)
+        {
+            if ((_transientState & TransientState.Contact) != 0)
+            {
+                bool isWater = (_transientState & TransientState.WaterContact) != 0;
+                var plane = new CollisionPlane(ContactPlaneNormal, ContactPlaneD);
+                if (CheckContact(true))
+                {
+                    transition.InitContactPlane(ContactPlaneCellId, plane, isWater);
+                    state |= ObjectInfoState.Contact;
+                    if ((_transientState & TransientState.OnWalkable) != 0)
+                    {
+                        state |= ObjectInfoState.OnWalkable;
+                    }
+                }
+                else
+                {
+                    transition.InitLastKnownContactPlane(ContactPlaneCellId, plane, isWater);
+                }
+            }
+
+            if ((_transientState & TransientState.Sliding) != 0)
+            {
+                transition.InitSlidingNormal(SlidingNormal);
+            }
+        }
+
+        if ((_state & PhysicsState.Missile) != 0)
+        {
+            state |= ObjectInfoState.PathClipped;
+        }
+
+        return state;
+    }
+
+    // The object's collision response after a retail sweep: the bounce, the stationary bits and the collision reports to
+    // the listeners of the RetailSweep.
     private const TransientState StationaryBits =
         TransientState.StationaryFall | TransientState.StationaryStop | TransientState.StationaryStuck;
 
@@ -256,5 +334,70 @@ public sealed partial class PhysicsObj
         }
 
         return true;
+    }
+
+    // The object's collision table: the objects it is touching, for once-per-contact reports.
+    private CollisionRecord[] _collisionTable = Array.Empty<CollisionRecord>();
+
+    /// <summary>How long a touch stays in the collision table without being refreshed, seconds of physics time (an ethereal
+    /// object's touch ends as soon as the clock moves on). Retail: the <c>&gt; 1.0</c> test of
+    /// <c>report_collision_end</c> (acclient.c:321712).</summary>
+    public const double CollisionRecordLifetime = 1.0;
+
+    /// <summary>Number of entries in the collision table.</summary>
+    public int NumCollisionRecords { get; private set; }
+
+    /// <summary>The objects this object is touching (or touched within the last second), in insertion order (retail keeps
+    /// a hash table, <c>collision_table</c>; its iteration order is not reproduced).</summary>
+    public ReadOnlySpan<CollisionRecord> CollisionRecords => _collisionTable.AsSpan(0, NumCollisionRecords);
+
+    /// <summary>Adds or refreshes the record for <paramref name="objectId"/>. Returns true when it already existed.</summary>
+    // retail: LongNIValHash<CollisionRecord>::clobber, as called by track_object_collision (acclient.c:321216)
+    internal bool ClobberCollisionRecord(uint objectId, double touchedTime, bool ethereal)
+    {
+        for (int i = 0; i < NumCollisionRecords; i++)
+        {
+            if (_collisionTable[i].ObjectId == objectId)
+            {
+                _collisionTable[i].TouchedTime = touchedTime;
+                _collisionTable[i].Ethereal = ethereal;
+                return true;
+            }
+        }
+
+        if (NumCollisionRecords == _collisionTable.Length)
+        {
+            // Retail's table starts with 4 buckets; growth allocates only when more objects touch than ever before (the first
+            // touch makes the table, as retail's first track_object_collision does).
+            Array.Resize(ref _collisionTable, _collisionTable.Length == 0 ? 4 : _collisionTable.Length * 2);
+        }
+
+        _collisionTable[NumCollisionRecords++] = new CollisionRecord { ObjectId = objectId, TouchedTime = touchedTime, Ethereal = ethereal };
+        return false;
+    }
+
+    /// <summary>Removes the record at <paramref name="index"/>, keeping the order of the others.</summary>
+    internal void RemoveCollisionRecordAt(int index)
+    {
+        NumCollisionRecords--;
+        Array.Copy(_collisionTable, index + 1, _collisionTable, index, NumCollisionRecords - index);
+    }
+
+    /// <summary>
+    /// Where <paramref name="p"/> lies around this object of height <paramref name="height"/>: bit 0x10 in front (local
+    /// x &gt;= 0) else 0x8; 0x20 right (y &gt;= 0) else 0x40; 0x1 high (z &gt;= 2/3 h), 0x2 middle, 0x4 low (z &lt; h/3).
+    /// </summary>
+    // retail: Position::determine_quadrant (acclient.c:467065)
+    public static int DetermineQuadrant(in Position self, float height, in Position p)
+    {
+        Vector3 hit = self.LocalToLocal(p, Vector3.Zero);
+        int q = hit.X >= 0.0 ? 16 : 8;
+        q |= hit.Y >= 0.0 ? 0x20 : 0x40;
+        if (height * 0.333333333 <= hit.Z)
+        {
+            return q | (height * 0.66666667 <= hit.Z ? 1 : 2);
+        }
+
+        return q | 4;
     }
 }

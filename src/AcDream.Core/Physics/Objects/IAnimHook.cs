@@ -1,6 +1,5 @@
-using AcDream.Core.Physics.Objects;
 
-namespace AcDream.Core.Physics.Hooks;
+namespace AcDream.Core.Physics.Objects;
 
 /// <summary>
 /// A one-shot animation event queued on an object (retail <c>CAnimHook</c> in <c>anim_hooks</c>): executed once in the
