@@ -2,6 +2,7 @@ using System;
 using System.IO;
 using System.Numerics;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Input;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
@@ -28,7 +29,8 @@ public sealed class QuickstartTests
         // step (CPhysics::UseTime), so the last step before t = 1 s lies within 1/30 s of it (a summed frame time can fall an
         // ulp short of the gate): 29/30 to 1 s of walking, y in 100 + 3.12 * [0.9667, 1] = [103.016, 103.12].
         // Jump: jump skill 100 at extent 0.5 gives h = (100 / 1400 * 22.2 + 0.05) * 0.5 = 0.8179 m (GetJumpHeight) and
-        // v_z = sqrt(19.6 h) = 4.0037 m/s (InqJumpVelocity). Jump clears ON_WALKABLE at once (CMotionInterp::jump), so the
+        // v_z = sqrt(19.6 h) = 4.0037 m/s (InqJumpVelocity); the extent is the power bar's level when the key comes up, the
+        // seconds held on the world's clock (30 frames of 1/60 s = 0.5 s; ClientCombatSystem::GetPowerBarLevel). Jump clears ON_WALKABLE at once (CMotionInterp::jump), so the
         // next step already flies from z = 0 with that launch speed: the apex is v_z^2 / (2 * 9.8) = 0.8179 m, sampled at
         // 1/30 s step times, so at most 9.8 * (1/60)^2 / 2 = 0.0014 m short: top in [0.8165, 0.8180]. It jumps standing
         // (the walk stopped), so y stays; 1 s after the jump (flight 0.82 s) it stands on the ground again.
@@ -65,14 +67,15 @@ public sealed class QuickstartTests
         player.EnterWorld(new Position(LandDefs.OutdoorCellId(0xA9B4FFFF, spawn.X, spawn.Y), spawn));
         world.Player = player;                                  // the player gets retail's movement manager
         System.Diagnostics.Debug.Assert(player.SetupIssues == ObjectSetupIssues.None);
-        MovementManager mm = MovementManager.Of(player);
+        var keys = new PlayerInput(player);                     // the player's keys, as retail's command interpreter sends them
 
         double now = 0;
-        mm.DoMotion(MotionCommand.WalkForward, new MovementParameters());   // W down: walk, 3.12 m/s forward
+        keys.KeyDown(MovementKeys.Forward);                                 // W down: walk, 3.12 m/s forward
         for (int f = 0; f < 60; f++) world.Tick(now += 1.0 / 60);           // 1 s at 60 fps: about 3.1 m north
-        mm.StopMotion(MotionCommand.WalkForward, new MovementParameters()); // W up
-        mm.GetOrCreateMotionInterpreter().ChargeJump();                     // jump key down ...
-        mm.GetOrCreateMotionInterpreter().Jump(0.5f, out _);                // ... and up: a 0.82 m jump (4.0 m/s up)
+        keys.KeyUp(MovementKeys.Forward);                                   // W up: stop
+        keys.KeyDown(MovementKeys.Jump);                                    // jump key down: the power bar fills ...
+        for (int f = 0; f < 30; f++) world.Tick(now += 1.0 / 60);           // ... for 0.5 s ...
+        keys.KeyUp(MovementKeys.Jump);                                      // ... and up: a 0.82 m jump (4.0 m/s up)
         float top = 0f;
         for (int f = 0; f < 60; f++) { world.Tick(now += 1.0 / 60); top = MathF.Max(top, player.Position.Frame.Origin.Z); }
         // quickstart-end

@@ -73,7 +73,7 @@ public static partial class MovementEventDecoder
     /// or infinite speed.</summary>
     /// <exception cref="ArgumentNullException"><paramref name="state"/> is null.</exception>
     // retail: InterpretedMotionState::UnPack (acclient.c:333444)
-    public static bool TryUnpackInterpretedState(ReadOnlySpan<byte> data, ref int offset, InterpretedMotionState state)
+    public static bool TryUnPackInterpretedState(ReadOnlySpan<byte> data, ref int offset, InterpretedMotionState state)
     {
         ArgumentNullException.ThrowIfNull(state);
         state.Reset();
