@@ -37,7 +37,7 @@ public static class MovementEvent
             return false;
         }
 
-        BeginUnpack(mm, obj, state.CurrentStyle);
+        BeginUnPack(mm, obj, state.CurrentStyle);
         MoveToState(mm, obj, state, stickToObject, standingLongJump);
         return true;
     }
@@ -55,7 +55,7 @@ public static class MovementEvent
 
         // acclient.c:339540-339542: the style is the header's (command_ids[style index]), switched to before the type's
         // data is read; a type-0 state without the style flag keeps the default non-combat style in its own field.
-        BeginUnpack(mm, obj, m.Style);
+        BeginUnPack(mm, obj, m.Style);
         switch (m.MovementType)
         {
             case MovementEventType.InterpretedMotion:
@@ -104,7 +104,7 @@ public static class MovementEvent
     }
 
     // acclient.c:339526-339542: cancel the move-to, unstick, then switch to the style when the interpreter is in another.
-    private static void BeginUnpack(MovementManager mm, PhysicsObj obj, MotionCommand style)
+    private static void BeginUnPack(MovementManager mm, PhysicsObj obj, MotionCommand style)
     {
         MotionInterp m = mm.GetOrCreateMotionInterpreter();
         obj.CancelMoveTo();
