@@ -34,7 +34,7 @@ public sealed partial class PhysicsObj
         {
             Vector3 pv = player._position.GetOffset(_position);
             PlayerVector = pv;
-            double d = Math.Sqrt((double)pv.X * pv.X + (double)pv.Y * pv.Y + (double)pv.Z * pv.Z);
+            double d = VectorMath.Magnitude(pv);
             PlayerDistance = (float)d;
             if (d > PhysicsGlobals.PlayerActivityDistance && world.ObjectMaintenanceActive)
             {
