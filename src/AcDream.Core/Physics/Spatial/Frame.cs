@@ -7,6 +7,8 @@ namespace AcDream.Core.Physics.Spatial;
 /// <summary>
 /// A rigid transform in retail's layout: an origin, a unit quaternion stored w, x, y, z, and the cached 3x3
 /// local-to-global rotation matrix that retail keeps in step with the quaternion (<c>Frame</c>, PORTAL/cgeometry/CFrame.c).
+/// Which is which: a <see cref="Frame"/> is a placed pose the engine computes with; an <see cref="AFrame"/> is the seven floats a
+/// data file stores (no matrix); an <c>AnimFrame</c> (Animation) is one keyframe of an animation, an AFrame per part and its hooks.
 /// </summary>
 /// <remarks>
 /// <para><b>Conventions.</b> +X east, +Y north, +Z up; headings are degrees clockwise from north (+Y), so heading 90 faces +X.</para>
