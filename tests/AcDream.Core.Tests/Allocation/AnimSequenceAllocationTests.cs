@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Retail.Animation;
+using AcDream.Core.Tests.Retail;
 using AcDream.Core.Tests.Support;
 using Xunit;
 

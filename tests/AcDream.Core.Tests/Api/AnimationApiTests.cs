@@ -3,7 +3,7 @@ using System.Linq;
 using System.Reflection;
 using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Tests.Support.Data;
+using AcDream.Core.Tests.Support;
 using AcDream.Core.Physics.Data;
 using Xunit;
 using AcDream.Core.Physics.Format;

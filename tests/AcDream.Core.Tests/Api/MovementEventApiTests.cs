@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Retail.Motion;
+using AcDream.Core.Tests.Retail;
 using Xunit;
 using AcDream.Core.Physics.Format;
 using AcDream.Core.Physics.Motion.Wire;

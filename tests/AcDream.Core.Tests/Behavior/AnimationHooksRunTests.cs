@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Seams;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
-using AcDream.Core.Tests.Retail.Animation;
+using AcDream.Core.Tests.Retail;
 using Xunit;
 
 namespace AcDream.Core.Tests.Behavior;

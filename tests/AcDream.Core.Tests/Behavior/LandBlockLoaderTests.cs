@@ -7,7 +7,6 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
 using AcDream.Core.Physics.Format;
 

@@ -3,7 +3,7 @@ using System.Numerics;
 using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
 using AcDream.Core.Physics.Spatial;
-using AcDream.Core.Tests.Retail.Animation;
+using AcDream.Core.Tests.Retail;
 using Xunit;
 
 namespace AcDream.Core.Tests.Stability;

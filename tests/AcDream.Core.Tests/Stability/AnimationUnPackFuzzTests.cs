@@ -2,7 +2,7 @@ using System;
 using System.Numerics;
 using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Tests.Support.Data;
+using AcDream.Core.Tests.Support;
 using AcDream.Core.Physics.Data;
 using Xunit;
 using AcDream.Core.Physics.Format;

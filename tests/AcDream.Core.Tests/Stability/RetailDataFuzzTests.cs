@@ -5,9 +5,8 @@ using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Data;
-using AcDream.Core.Tests.Retail.Data;
+using AcDream.Core.Tests.Retail;
 using AcDream.Core.Tests.Support;
-using AcDream.Core.Tests.Support.Data;
 using Xunit;
 using AcDream.Core.Physics.Format;
 

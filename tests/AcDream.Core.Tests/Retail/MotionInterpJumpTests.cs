@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Retail.Motion;
+namespace AcDream.Core.Tests.Retail;
 
 // jump, charge_jump, jump_is_allowed, get_jump_v_z, get_leave_ground_velocity, HitGround and LeaveGround, on objects with
 // retail's default state (GRAVITY set).

@@ -1,7 +1,7 @@
 using AcDream.Core.Physics.Motion;
 using Xunit;
 
-namespace AcDream.Core.Tests.Retail.Motion;
+namespace AcDream.Core.Tests.Retail;
 
 public class MovementSystemTests
 {

@@ -11,7 +11,7 @@ using AcDream.Core.Tests.Support;
 using Xunit;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Tests.Retail.Data;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// <c>CEnvironment::UnPack</c> (acclient.c:352987), <c>CCellStruct::UnPack</c> (acclient.c:355822), <c>CEnvCell::UnPack</c>

@@ -3,12 +3,12 @@ using System.Numerics;
 using AcDream.Core.Fixtures.Animation;
 using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Animation;
-using AcDream.Core.Tests.Support.Data;
+using AcDream.Core.Tests.Support;
 using AcDream.Core.Physics.Data;
 using Xunit;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Tests.Retail.Animation;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// CAnimation::UnPack (acclient.c:334085), AnimFrame::UnPack (acclient.c:333869), CAnimHook::UnPackHook

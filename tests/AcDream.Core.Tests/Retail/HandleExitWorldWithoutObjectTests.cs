@@ -2,7 +2,7 @@ using System.Threading.Tasks;
 using AcDream.Core.Physics.Motion;
 using Xunit;
 
-namespace AcDream.Core.Tests.Retail.Motion;
+namespace AcDream.Core.Tests.Retail;
 
 // Issue #25 item 7: retail's CMotionInterp::HandleExitWorld (acclient.c:343678-343713) loops "for (i = head; i; i = head)"
 // and removes the head only inside "if (physics_obj && i)": with pending motions and no physics object it never removes one

@@ -11,7 +11,7 @@ using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Tests.Support.Geometry;
 using Xunit;
 
-namespace AcDream.Core.Tests.Retail.Data;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// The real geometry of ../shared/data/geometry (22 EnvCells of two Holtburg cellars and the shell GfxObj 0x01000A2B) written

@@ -14,7 +14,7 @@ using AcDream.Core.Tests.Support;
 using AcDream.Core.Fixtures.Data;
 using Xunit;
 
-namespace AcDream.Core.Tests.Retail.Animation;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// The retail motion table played end to end (<c>MotionTableManager::PerformMovement</c> -> <c>CMotionTable::GetObjectSequence</c>

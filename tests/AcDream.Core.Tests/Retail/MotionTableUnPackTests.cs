@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Motion;
 using Xunit;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Tests.Retail.Animation;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// <c>CMotionTable::UnPack</c> (acclient.c:338603) and <c>MotionData::UnPack</c> (acclient.c:341813) over bytes written

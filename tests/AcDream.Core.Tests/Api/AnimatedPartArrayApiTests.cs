@@ -10,7 +10,7 @@ using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using Xunit;
 
-namespace AcDream.Core.Tests.Api.Animation;
+namespace AcDream.Core.Tests.Api;
 
 /// <summary><see cref="AnimatedPartArray"/> and <see cref="MotionTablePlayer"/>: argument checks before anything changes, and
 /// the parts' frames a client draws with.</summary>

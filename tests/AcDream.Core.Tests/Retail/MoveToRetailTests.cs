@@ -7,7 +7,7 @@ using Xunit;
 using AcDream.Core.Physics.Format;
 using AcDream.Core.Physics.Motion.MoveTo;
 
-namespace AcDream.Core.Tests.Retail.Motion;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>MovementParameters' move-to side (CMovementDefs.c, acclient.c:346152–346343), heading_greater / heading_diff
 /// (acclient.c:344714, 344737) and the constants of MoveToManager and TargetManager.</summary>

@@ -9,7 +9,7 @@ using AcDream.Core.Physics.World;
 using Xunit;
 using AcDream.Core.Physics.Motion.Wire;
 
-namespace AcDream.Core.Tests.Retail.Motion;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>A motion table that records every interpreted motion it is asked to play (and plays it on a retail-speed
 /// table).</summary>

@@ -8,7 +8,7 @@ using AcDream.Core.Tests.Support;
 using Xunit;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Tests.Retail.Data;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// <c>CLandBlock::UnPack</c> (acclient.c:351520) with <c>CLandBlockStruct::UnPack</c> (acclient.c:354108), and

@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Tests.Support;
 
-namespace AcDream.Core.Tests.Retail.Animation;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>Shared pieces of the animation tests: an object to queue hooks on and the queue read back as names.</summary>
 internal static class AnimTestSupport

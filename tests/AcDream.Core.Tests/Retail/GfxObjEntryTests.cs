@@ -8,7 +8,7 @@ using AcDream.Core.Physics.Data;
 using Xunit;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Tests.Retail.Data;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// <c>CGfxObj::Serialize</c> (acclient.c:356682) with <c>CVertexArray::UnPack</c>, <c>CPolygon::UnPack</c> and the physics BSP

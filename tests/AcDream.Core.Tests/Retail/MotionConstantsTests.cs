@@ -2,7 +2,7 @@ using System;
 using AcDream.Core.Physics.Motion;
 using Xunit;
 
-namespace AcDream.Core.Tests.Retail.Motion;
+namespace AcDream.Core.Tests.Retail;
 
 public class MotionConstantsTests
 {

@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Data;
 
-namespace AcDream.Core.Tests.Support.Data;
+namespace AcDream.Core.Tests.Support;
 
 /// <summary>A data source over a dictionary of entries (the tests' stand-in for a client's data files).</summary>
 internal sealed class DictionarySource : IRetailDataSource

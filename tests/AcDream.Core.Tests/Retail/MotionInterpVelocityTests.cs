@@ -3,7 +3,7 @@ using AcDream.Core.Physics.Motion;
 using AcDream.Core.Tests.Support;
 using Xunit;
 
-namespace AcDream.Core.Tests.Retail.Motion;
+namespace AcDream.Core.Tests.Retail;
 
 // The conversions (adjust_motion, apply_run_to_command) and get_state_velocity, driven through DoMotion as the player's
 // commands arrive. The objects have no GRAVITY, so contact_allows_move lets every motion start.

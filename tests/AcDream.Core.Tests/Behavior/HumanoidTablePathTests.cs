@@ -13,7 +13,7 @@ using AcDream.Core.Tests.Support;
 using AcDream.Core.Tests.Support.Shared;
 using Xunit;
 
-namespace AcDream.Core.Tests.Behavior.Animation;
+namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>
 /// The same player motion — walk, turn while walking, run while turning, stop turning, stop — through the stand-in

@@ -9,7 +9,7 @@ using AcDream.Core.Physics.Spatial;
 using Xunit;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Tests.Retail.Data;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// <c>CSetup::UnPack</c> (acclient.c:335520), a test per field group, the bytes written field by field in the order the

@@ -5,9 +5,9 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using Xunit;
-using static AcDream.Core.Tests.Retail.Animation.AnimTestSupport;
+using static AcDream.Core.Tests.Retail.AnimTestSupport;
 
-namespace AcDream.Core.Tests.Retail.Animation;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// A link then a cycle on one sequence: CSequence::append_animation (acclient.c:340589), update_internal's AnimDone hook

@@ -5,9 +5,9 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
 using Xunit;
-using static AcDream.Core.Tests.Retail.Animation.AnimTestSupport;
+using static AcDream.Core.Tests.Retail.AnimTestSupport;
 
-namespace AcDream.Core.Tests.Retail.Animation;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// CSequence::update_internal (acclient.c:340658) and advance_to_next_animation (acclient.c:340472) on one cyclic

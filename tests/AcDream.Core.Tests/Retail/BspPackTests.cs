@@ -8,7 +8,7 @@ using AcDream.Core.Tests.Support;
 using Xunit;
 using AcDream.Core.Physics.Format;
 
-namespace AcDream.Core.Tests.Retail.Data;
+namespace AcDream.Core.Tests.Retail;
 
 /// <summary>
 /// Retail's BSP pack (<c>BSPNODE::PackChild</c> acclient.c:363316, <c>BSPNODE::Pack</c> 363142, <c>BSPLEAF::PackLeaf</c>
