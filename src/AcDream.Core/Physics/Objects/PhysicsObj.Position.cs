@@ -257,7 +257,8 @@ public sealed partial class PhysicsObj
     /// free-space step): nothing to respond to; the world's sweep re-shadows the object where it stands
     /// (<see cref="CollisionSweep.ShadowInPlace"/>). See <see cref="CommitTransition"/>.
     /// </summary>
-    // retail: CPhysicsObj::SetPositionInternal(CTransition*) (acclient.c:322503)
+    // retail part: CPhysicsObj::SetPositionInternal(CTransition*) over a result in place of the transition (acclient.c line
+    // 322503): the same cell, frame, contact-plane and sliding steps as the transition's commit below, no collisions
     internal void CommitTransitionInternal(in TransitionResult t)
     {
         Touch();
