@@ -120,4 +120,29 @@ public class MotionTableUnPackTests
             .ToArray();
         Assert.Throws<RetailDataFormatException>(() => MotionTable.UnPack(fast));
     }
+    [Fact]
+    public void NumAnims_IsASignedChar_128AndAboveAreRefused()
+    {
+        // MotionData::UnPack (acclient.c:341813) reads num_anims as a char: it sizes the array by the unsigned byte but its
+        // read loop (`v14 < num_anims`) and GetObjectSequence's sums use the sign-extended value, so 128..255 read past the
+        // array. 127 animations are read; 128 are a format error at the count's byte (after the 4-byte id).
+        static byte[] With(int n)
+        {
+            var anims = new (uint, int, int, float)[n];
+            for (int i = 0; i < n; i++)
+            {
+                anims[i] = (0x03000001u, 0, -1, 30f);
+            }
+
+            return new MotionTableBytes { DefaultStyle = NonCombat }
+                .StyleDefault(NonCombat, Ready)
+                .Cycle(NonCombat, Ready, new MotionDataSpec(anims))
+                .ToArray();
+        }
+
+        Assert.Equal(1, MotionTable.UnPack(With(127)).CycleCount);
+        var ex = Assert.Throws<RetailDataFormatException>(() => MotionTable.UnPack(With(128)));
+        Assert.Contains("127", ex.Message);
+        Assert.Throws<RetailDataFormatException>(() => MotionTable.UnPack(With(255)));
+    }
 }

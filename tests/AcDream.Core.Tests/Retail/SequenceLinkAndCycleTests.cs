@@ -149,8 +149,8 @@ public class SequenceLinkAndCycleTests
         seq.RemoveAllLinkAnimations();
         Assert.Equal(1, seq.AnimationCount);
         Assert.Equal(CycleId, seq.CurrentAnimation!.Id);
-        // Backwards: starting frame high + 1 - EPSILON = 3 - 0.00019999999.
-        Assert.Equal(3.0 - 0.00019999999, seq.FrameNumber);
+        // Backwards: starting frame high + 1 - EPSILON = 3 - (double)0.0002f (the float EPSILON widened: AnimationEpsilonTests).
+        Assert.Equal(3.0 - (double)0.0002f, seq.FrameNumber);
     }
 
     [Fact]
@@ -181,9 +181,9 @@ public class SequenceLinkAndCycleTests
         seq.UnPack(packed);
         Assert.Equal(CycleId, seq.CurrentAnimation!.Id);
         seq.RemoveCyclicAnims();
-        // curr = C's previous, L, at L's ending frame high + 1 - EPSILON = 2 - 0.00019999999.
+        // curr = C's previous, L, at L's ending frame high + 1 - EPSILON = 2 - (double)0.0002f (the float EPSILON widened).
         Assert.Equal(LinkId, seq.CurrentAnimation!.Id);
-        Assert.Equal(2.0 - 0.00019999999, seq.FrameNumber);
+        Assert.Equal(2.0 - (double)0.0002f, seq.FrameNumber);
         Assert.Same(seq.Head, seq.FirstCyclic);
         Assert.Equal(1, seq.AnimationCount);
     }

@@ -112,4 +112,20 @@ public abstract class AnimHook : IAnimHook
 
     // Reads a float that a physics hook hands to a PhysicsObj setter, which refuses NaN and infinity: a format error here.
     private protected static float ReadFinite(ref RetailDataReader reader, string what) => reader.ReadFiniteSingle(what);
+
+    // Reads a duration a physics hook hands to a PhysicsObj setter (a fade's or a scale's time, CallPES's pause): finite and
+    // within the setters' own domain, |t| < 2^40 s (InputLimits.IsClockTimeInDomain, the predicate the setters test), so
+    // that the setter never refuses it inside process_hooks: a format error here.
+    private protected static float ReadDuration(ref RetailDataReader reader, string what)
+    {
+        int at = reader.Offset;
+        float t = reader.ReadFiniteSingle(what);
+        // non-retail: retail takes any float; a duration of 2^40 s or more made every tick crossing the hook's frame throw
+        if (!Spatial.InputLimits.IsClockTimeInDomain(t))
+        {
+            throw reader.ErrorAt(at, $"{what} {t} s is outside ±2^40 s");
+        }
+
+        return t;
+    }
 }

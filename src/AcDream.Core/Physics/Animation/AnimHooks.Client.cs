@@ -19,6 +19,7 @@ public sealed class NoOpHook : AnimHook
     public override AnimHookType HookType => AnimHookType.NoOp;
 
     /// <inheritdoc />
+    // retail: NOOPHook::Execute (0x00508950, 3 bytes: ret 4; no acclient.c body)
     public override void Execute(PhysicsObj obj)
     {
     }
@@ -155,8 +156,10 @@ public sealed class AttackHook : AnimHook
     }
 }
 
-/// <summary>Replaces the object of part <see cref="PartIndex"/> with <see cref="PartId"/> (retail <c>ReplaceObjectHook</c>,
-/// an <c>AnimPartChange</c>).</summary>
+/// <summary>Names a part and a replacement GfxObj (retail <c>ReplaceObjectHook</c>, an <c>AnimPartChange</c>) and, as in retail,
+/// does nothing when it fires: its <c>Execute</c> is the shared <c>ret 4</c> of <c>NOOPHook::Execute</c>, so
+/// <see cref="IAnimHookListener"/> never receives it. A client that wants part swaps reads <see cref="PartIndex"/> and
+/// <see cref="PartId"/> from <see cref="AnimFrame.Hooks"/> itself (a non-retail use of the data).</summary>
 public sealed class ReplaceObjectHook : AnimHook
 {
     // retail: ReplaceObjectHook::ReplaceObjectHook (acclient.c:342642)
@@ -174,8 +177,12 @@ public sealed class ReplaceObjectHook : AnimHook
     /// <summary>The new part's GfxObj data id (0x01000000 plus the packed value).</summary>
     public uint PartId { get; private set; }
 
-    /// <inheritdoc />
-    public override void Execute(PhysicsObj obj) => Notify(obj);
+    /// <summary>Does nothing (retail: <c>ReplaceObjectHook::Execute</c> shares address 0x00508950 and its 3-byte body, a lone
+    /// <c>ret 4</c>, with <c>NOOPHook::Execute</c> in the PDB).</summary>
+    // retail: ReplaceObjectHook::Execute (0x00508950, 3 bytes, shared with NOOPHook::Execute: ret 4; no acclient.c body)
+    public override void Execute(PhysicsObj obj)
+    {
+    }
 
     // ReplaceObjectHook::UnPack is AnimPartChange::UnPack (acclient.c:471698): the part index byte, then the id packed as
     // Unpack_AsDataIDOfKnownType (acclient.c:667731) with the GfxObj base 0x01000000.

@@ -7,8 +7,8 @@ namespace AcDream.Core.Physics.Animation;
 
 // The hooks the library runs itself (retail: their Execute calls CPhysicsObj's own setters). They are internal: no listener
 // receives them (a client walking AnimFrame.Hooks sees them as AnimHook, with their HookType). Each float they hand to a
-// setter is read finite (a scale also within InputLimits' scale domain), so that the setter, which refuses such values,
-// never throws from inside a tick.
+// setter is read finite (a scale also within InputLimits' scale domain, a duration within ±2^40 s, the setters' own), so
+// that the setter, which refuses such values, never throws from inside a tick.
 
 /// <summary>
 /// A fade of the whole object from <see cref="Start"/> to <see cref="End"/> over <see cref="Time"/> seconds: what
@@ -37,7 +37,7 @@ internal abstract class FadeHook : AnimHook
     {
         Start = ReadFinite(ref reader, _name + " start");
         End = ReadFinite(ref reader, _name + " end");
-        Time = ReadFinite(ref reader, _name + " time");
+        Time = ReadDuration(ref reader, _name + " time");
     }
 }
 
@@ -71,7 +71,7 @@ internal abstract class PartFadeHook : AnimHook
         Part = reader.ReadUInt32(_name + " part");
         Start = ReadFinite(ref reader, _name + " start");
         End = ReadFinite(ref reader, _name + " end");
-        Time = ReadFinite(ref reader, _name + " time");
+        Time = ReadDuration(ref reader, _name + " time");
     }
 }
 
@@ -209,7 +209,7 @@ internal sealed class ScaleHook : AnimHook
         }
 
         End = end;
-        Time = ReadFinite(ref reader, "ScaleHook time");
+        Time = ReadDuration(ref reader, "ScaleHook time");
     }
 }
 
@@ -239,7 +239,7 @@ internal sealed class CallPesHook : AnimHook
     private protected override void UnPackBody(ref RetailDataReader reader)
     {
         ScriptId = reader.ReadUInt32("CallPESHook pes");
-        Pause = ReadFinite(ref reader, "CallPESHook pause");
+        Pause = ReadDuration(ref reader, "CallPESHook pause");
     }
 }
 

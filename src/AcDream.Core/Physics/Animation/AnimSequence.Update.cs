@@ -7,8 +7,9 @@ namespace AcDream.Core.Physics.Animation;
 
 public sealed partial class AnimSequence
 {
-    // Retail's EPSILON, 0.00019999999 in double: framerates and quanta at or below it move nothing.
-    private const double Epsilon = 0.00019999999;
+    // Retail's EPSILON as the x87 code loads it: the float 0.0002f (0x3951B717) widened to double, 1.99999994947575e-4 (the
+    // decompiler prints 0.00019999999, a double literal 4.95e-12 smaller). Framerates and quanta at or below it move nothing.
+    private const double Epsilon = PhysicsGlobals.Epsilon;
 
     /// <summary>
     /// Plays <paramref name="quantum"/> seconds: with animations queued, advances them (root motion and the sequence's

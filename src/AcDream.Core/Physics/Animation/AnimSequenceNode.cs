@@ -158,13 +158,14 @@ internal sealed class AnimSequenceNode
         return null;
     }
 
-    /// <summary>Where playback starts: the low frame, or just below high + 1 when playing backwards.</summary>
+    /// <summary>Where playback starts: the low frame, or just below high + 1 when playing backwards (high + 1 − EPSILON, the float
+    /// 0.0002f widened to double: for high frame 9, 0x4023FFE5C91D2000).</summary>
     // retail: AnimSequenceNode::get_starting_frame (acclient.c:341015)
     internal double GetStartingFrame()
     {
         if (Framerate < 0.0)
         {
-            return (double)(HighFrame + 1) - 0.00019999999;
+            return (double)(HighFrame + 1) - (double)PhysicsGlobals.Epsilon;
         }
 
         return LowFrame;
@@ -179,7 +180,7 @@ internal sealed class AnimSequenceNode
             return LowFrame;
         }
 
-        return (double)(HighFrame + 1) - 0.00019999999;
+        return (double)(HighFrame + 1) - (double)PhysicsGlobals.Epsilon;
     }
 
     /// <summary>The next node, or null.</summary>

@@ -4,8 +4,9 @@ namespace AcDream.Core.Physics.Animation;
 
 /// <summary>
 /// The client's side of the animation hooks the library cannot run itself: sounds, particles, scripts, attacks, lights,
-/// part replacement, texture velocity, no-draw (retail calls the client's sound, particle and weenie systems from these
-/// hooks' <c>Execute</c>). Set on <see cref="World.PhysicsWorld.AnimHookListener"/>.
+/// texture velocity, no-draw (retail calls the client's sound, particle and weenie systems from these hooks'
+/// <c>Execute</c>). Set on <see cref="World.PhysicsWorld.AnimHookListener"/>. <see cref="ReplaceObjectHook"/> and
+/// <see cref="NoOpHook"/> never reach it: their retail <c>Execute</c> does nothing.
 /// </summary>
 public interface IAnimHookListener
 {

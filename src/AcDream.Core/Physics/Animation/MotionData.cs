@@ -24,7 +24,7 @@ internal sealed class MotionData
     public uint Id;
 
     /// <summary>The animations, played in order (retail <c>anims</c>, <c>num_anims</c> long; <c>num_anims</c> is a signed
-    /// char in retail, but every count a byte can hold is read as 0..255 by the unpacker).</summary>
+    /// char in retail, so the unpacker accepts 0..127 only).</summary>
     public AnimData[] Anims = System.Array.Empty<AnimData>();
 
     /// <summary>Velocity at speed 1, object-local m/s (retail <c>velocity</c>).</summary>
@@ -48,7 +48,16 @@ internal sealed class MotionData
     {
         var d = new MotionData();
         d.Id = r.ReadUInt32("MotionData id");
+        int countAt = r.Offset;
         byte numAnims = r.ReadByte("MotionData num_anims");
+        // non-retail: num_anims is a signed char; retail sizes the array by the byte (unsigned) but runs its read loop
+        // (`v14 < num_anims`, unsigned against the sign-extended count) and GetObjectSequence's sums on the signed value, so a
+        // count of 128..255 reads past the array: refused (docs/divergences.md)
+        if (numAnims > sbyte.MaxValue)
+        {
+            throw r.ErrorAt(countAt, $"MotionData num_anims {numAnims} is above 127 (a signed char in retail)");
+        }
+
         d.Bitfield = r.ReadByte("MotionData bitfield");
         byte physics = r.ReadByte("MotionData physics flags");
         r.Align4();

@@ -322,9 +322,9 @@ public sealed partial class MotionTable
         return true;
     }
 
-    /// <summary>Stops <paramref name="motion"/> (retail's <c>StopObjectMotion</c> has no body of its own in the
-    /// decompilation: the linker folded it with the identical <c>StopSequenceMotion</c>, acclient.c:337911).</summary>
-    // retail: CMotionTable::StopObjectMotion (folded into CMotionTable::StopSequenceMotion, acclient.c:337911)
+    /// <summary>Stops <paramref name="motion"/>: retail's <c>StopObjectMotion</c> is its own 5-byte thunk (0x00523EC0 in the
+    /// PDB), a tail jump to <c>StopSequenceMotion</c> (acclient.c:337911); the decompilation shows it no body.</summary>
+    // retail: CMotionTable::StopObjectMotion (a 5-byte tail-jump thunk to CMotionTable::StopSequenceMotion, acclient.c:337911)
     internal bool StopObjectMotion(uint motion, float speed, MotionState state, AnimSequence sequence, out uint numAnims) =>
         StopSequenceMotion(motion, speed, state, sequence, out numAnims);
 

@@ -108,9 +108,9 @@ public sealed partial class MotionTable
     // retail: change_cycle_speed (acclient.c:337268)
     internal static void ChangeCycleSpeed(AnimSequence sequence, MotionData? data, float oldSpeed, float newSpeed)
     {
-        if (System.Math.Abs(oldSpeed) <= 0.00019999999)
+        if (System.Math.Abs(oldSpeed) <= (double)Spatial.PhysicsGlobals.Epsilon)
         {
-            if (System.Math.Abs(newSpeed) < 0.00019999999)
+            if (System.Math.Abs(newSpeed) < (double)Spatial.PhysicsGlobals.Epsilon)
             {
                 sequence.MultiplyCyclicAnimationFramerate(0f);
             }

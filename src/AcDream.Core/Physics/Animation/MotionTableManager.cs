@@ -11,9 +11,12 @@ namespace AcDream.Core.Physics.Animation;
 /// </summary>
 internal sealed class MotionTableManager
 {
-    private const int CompletedCapacity = 32;
-    private readonly MotionCommand[] _completedMotion = new MotionCommand[CompletedCapacity];
-    private readonly bool[] _completedSuccess = new bool[CompletedCapacity];
+    // The completed-motion ring: 32 entries at first, doubled in Append (where the pending list grows) whenever the pending
+    // and completed motions together could outnumber it. Each MotionDone moves one motion from the pending list to the ring,
+    // so the ring never fills and the per-tick path (AnimationDone, CheckForCompletedMotions) never grows it.
+    private const int InitialCompletedCapacity = 32;
+    private MotionCommand[] _completedMotion = new MotionCommand[InitialCompletedCapacity];
+    private bool[] _completedSuccess = new bool[InitialCompletedCapacity];
     private int _completedHead;
     private int _completedCount;
 
@@ -21,6 +24,7 @@ internal sealed class MotionTableManager
     private AnimNode? _head;
     private AnimNode? _tail;
     private AnimNode? _free;
+    private int _pendingCount;
 
     /// <summary>Creates a manager for <paramref name="table"/> (null: every movement fails with
     /// <see cref="MotionError.NoMotionTable"/>, as retail's manager without a table).</summary>
@@ -42,19 +46,10 @@ internal sealed class MotionTableManager
     public int AnimationCounter { get; private set; }
 
     /// <summary>Number of motions not yet done.</summary>
-    public int PendingCount
-    {
-        get
-        {
-            int n = 0;
-            for (AnimNode? a = _head; a is not null; a = a.Next)
-            {
-                n++;
-            }
+    public int PendingCount => _pendingCount;
 
-            return n;
-        }
-    }
+    /// <summary>Capacity of the completed-motion ring (for tests: it grows with the pending list, never in a tick).</summary>
+    internal int CompletedCapacity => _completedMotion.Length;
 
     /// <summary>Replaces the table (retail reads it by id from the data files).</summary>
     // retail: MotionTableManager::SetMotionTableID (acclient.c:329772)
@@ -80,7 +75,7 @@ internal sealed class MotionTableManager
 
         motion = _completedMotion[_completedHead];
         success = _completedSuccess[_completedHead];
-        _completedHead = (_completedHead + 1) % CompletedCapacity;
+        _completedHead = (_completedHead + 1) % _completedMotion.Length;
         _completedCount--;
         return true;
     }
@@ -88,18 +83,41 @@ internal sealed class MotionTableManager
     // CPhysicsObj::MotionDone, queued.
     private void MotionDone(uint motion, bool success)
     {
-        // non-retail: a bounded queue (retail calls the object at once); when full the oldest is dropped. The object drains
-        // it in the same step (PhysicsObj.CheckForCompletedMotions), so it holds at most the motions of one update.
-        if (_completedCount == CompletedCapacity)
-        {
-            _completedHead = (_completedHead + 1) % CompletedCapacity;
-            _completedCount--;
-        }
-
-        int at = (_completedHead + _completedCount) % CompletedCapacity;
+        // non-retail: a queue (retail calls the object at once) that the object drains in the same call
+        // (PhysicsObj.ReportCompletedMotions). It loses nothing: Append keeps its capacity at least the pending motions plus
+        // the completed ones not yet taken, and each MotionDone moves one pending motion here.
+        int at = (_completedHead + _completedCount) % _completedMotion.Length;
         _completedMotion[at] = (MotionCommand)motion;
         _completedSuccess[at] = success;
         _completedCount++;
+    }
+
+    // Doubles the completed-motion ring until it holds `needed`, keeping its order (called from Append only).
+    private void EnsureCompletedCapacity(int needed)
+    {
+        int capacity = _completedMotion.Length;
+        if (needed <= capacity)
+        {
+            return;
+        }
+
+        while (capacity < needed)
+        {
+            capacity *= 2;
+        }
+
+        var motions = new MotionCommand[capacity];
+        var successes = new bool[capacity];
+        for (int i = 0; i < _completedCount; i++)
+        {
+            int from = (_completedHead + i) % _completedMotion.Length;
+            motions[i] = _completedMotion[from];
+            successes[i] = _completedSuccess[from];
+        }
+
+        _completedMotion = motions;
+        _completedSuccess = successes;
+        _completedHead = 0;
     }
 
     /// <summary>Drops the link animations queued after <paramref name="node"/>: the counts of the motions after it are
@@ -178,7 +196,7 @@ internal sealed class MotionTableManager
     {
         while (_head is not null)
         {
-            AnimationDone(false);
+            DrainOne();
         }
     }
 
@@ -190,8 +208,25 @@ internal sealed class MotionTableManager
         seq.RemoveAllLinkAnimations();
         while (_head is not null)
         {
-            AnimationDone(false);
+            DrainOne();
         }
+    }
+
+    // One turn of the drain loops above: retail's AnimationDone(false). A call whose count the head does not reach only
+    // increments the counter (AnimationDone breaks before anything else), so the counter is first moved to one below the
+    // head's count: the same calls' result without them.
+    private void DrainOne()
+    {
+        // non-retail: a motion with no animations (a cycle without animations: num_anims = 0 - 1 = 0xFFFFFFFF) kept retail's
+        // loop calling AnimationDone about 2^32 times, until the counter reached the count (a stall of tens of seconds);
+        // skipping the calls that only count leaves the same state (docs/divergences.md)
+        uint needed = _head!.NumAnims;
+        if (needed > (uint)AnimationCounter + 1u)
+        {
+            AnimationCounter = (int)(needed - 1u);
+        }
+
+        AnimationDone(false);
     }
 
     /// <summary>Reports done, in order, the motions at the head that wait for no animation.</summary>
@@ -215,9 +250,9 @@ internal sealed class MotionTableManager
         }
     }
 
-    /// <summary>Per-step bookkeeping (retail's <c>UseTime</c> has no body of its own in the decompilation: the linker folded
-    /// it with the identical <c>CheckForCompletedMotions</c>, acclient.c:329959).</summary>
-    // retail: MotionTableManager::UseTime (folded into MotionTableManager::CheckForCompletedMotions, acclient.c:329959)
+    /// <summary>Per-step bookkeeping: retail's <c>UseTime</c> is its own 5-byte thunk (0x0051BFD0 in the PDB), a tail jump to
+    /// <c>CheckForCompletedMotions</c> (acclient.c:329959); the decompilation shows it no body.</summary>
+    // retail: MotionTableManager::UseTime (a 5-byte tail-jump thunk to MotionTableManager::CheckForCompletedMotions, acclient.c:329959)
     public void UseTime() => CheckForCompletedMotions();
 
     /// <summary>When the newest motion with animations repeats an earlier one still queued (a substate, or a style), the
@@ -353,6 +388,7 @@ internal sealed class MotionTableManager
 
     private void Append(uint motion, uint numAnims)
     {
+        EnsureCompletedCapacity(_pendingCount + 1 + _completedCount);
         AnimNode? n = _free;
         if (n is null)
         {
@@ -377,6 +413,7 @@ internal sealed class MotionTableManager
         }
 
         _tail = n;
+        _pendingCount++;
     }
 
     private void RemoveHead()
@@ -400,6 +437,7 @@ internal sealed class MotionTableManager
         h.Prev = null;
         h.Next = _free;
         _free = h;
+        _pendingCount--;
     }
 
     /// <summary>A started motion and the animations it waits for (retail <c>MotionTableManager::AnimNode</c>).</summary>

@@ -77,11 +77,12 @@ public readonly struct AFrame : IEquatable<AFrame>
     // The reader's door (Format.RetailDataReader.ReadAFrame, retail AFrame::UnPack): values already checked.
     internal static AFrame FromChecked(Vector3 origin, float qw, float qx, float qy, float qz) => new(origin, qw, qx, qy, qz);
 
-    // AFrame::IsValid's norm test (acclient.c:467555): |q|² summed z, y, x, w in float, within 5 × EPSILON of 1 in double.
+    // AFrame::IsValid's norm test (acclient.c:467555): |q|² summed z, y, x, w on the x87 stack (double: each float product is
+    // exact there) and stored to the float `norm`, then within 5 × EPSILON (the float 0.0002f widened) of 1 in double.
     internal static bool IsUnit(float w, float x, float y, float z)
     {
-        float norm = z * z + y * y + x * x + w * w;
-        return !(0.00019999999 * 5.0 < Math.Abs(norm - 1.0)) && !float.IsNaN(norm);
+        float norm = (float)((double)z * z + (double)y * y + (double)x * x + (double)w * w);
+        return !((double)PhysicsGlobals.Epsilon * 5.0 < Math.Abs(norm - 1.0)) && !float.IsNaN(norm);
     }
 
     /// <summary>Sets <paramref name="frame"/> to <paramref name="frame"/> ∘ <paramref name="f2"/> (f2 expressed in frame's local

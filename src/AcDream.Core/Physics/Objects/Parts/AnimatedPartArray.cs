@@ -27,6 +27,16 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
     private Frame _frame = Frame.Identity;
     private Vector3 _scale = Vector3.One;
 
+    // The parts' frames (retail CPhysicsPart::pos.frame), kept lazily: SetFrame records the object's frame, the animation
+    // frame and the scale of that call (the snapshot); parts below _snapshotCovered are that snapshot combined on demand,
+    // the others hold what an earlier SetFrame that covered them wrote (retail's UpdateParts leaves them), materialised
+    // into _partFrames only when a SetFrame covers fewer parts than the snapshot before it. Made once, per part.
+    private readonly Frame[] _partFrames;
+    private Frame _snapshotFrame = Frame.Identity;
+    private AnimFrame? _snapshotAnimFrame;
+    private Vector3 _snapshotScale = Vector3.One;
+    private int _snapshotCovered;
+
     /// <summary>Creates the part array of a setup.</summary>
     /// <param name="setup">The setup's physics (spheres, cylinder spheres, sizes, step heights).</param>
     /// <param name="numParts">The setup's part count (retail <c>CSetup::num_parts</c>): at least 1.</param>
@@ -35,13 +45,16 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
     /// <see cref="MotionError.NoMotionTable"/>).</param>
     /// <param name="animations">Resolves the animations the table names, or null (then none plays; only the motion data's
     /// velocity and omega move the body).</param>
-    /// <param name="placementFrames">The setup's default placement frame, one <see cref="AFrame"/> per part (retail
-    /// <c>CSetup::placement_frames</c>, the Default entry): the parts' frames while no animation plays. Empty: identity.</param>
+    /// <param name="placementFrames">The setup's placement frame, one <see cref="AFrame"/> per part (retail
+    /// <c>CSetup::placement_frames</c>): the parts' frames while no animation plays. Retail's <c>CPartArray::CreateSetup</c>
+    /// asks for entry 0x65 (Resting) and, when the setup has none, falls back to entry 0 (Default). Empty: identity.</param>
+    /// <param name="placementId">The id of the entry <paramref name="placementFrames"/> holds, as the sequence reports it
+    /// (<see cref="AnimSequence.PlacementFrameId"/>): 0 (Default, retail's fallback) unless given; 0x65 for a Resting entry.</param>
     /// <exception cref="ArgumentNullException"><paramref name="setup"/> is null.</exception>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="numParts"/> is below 1.</exception>
     /// <exception cref="ArgumentException"><paramref name="placementFrames"/> is neither empty nor one frame per part.</exception>
     public AnimatedPartArray(SetupPhysics setup, int numParts, MotionTable? motionTable, IAnimationSource? animations,
-        ReadOnlySpan<AFrame> placementFrames = default)
+        ReadOnlySpan<AFrame> placementFrames = default, uint placementId = 0)
     {
         ArgumentNullException.ThrowIfNull(setup);
         ArgumentOutOfRangeException.ThrowIfLessThan(numParts, 1);
@@ -51,6 +64,8 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
         }
 
         NumParts = numParts;
+        _partFrames = new Frame[numParts];
+        Array.Fill(_partFrames, Frame.Identity);
         _spheres = setup.Spheres.ToArray();
         _cylSpheres = setup.CylSpheres.ToArray();
         _setupRadius = setup.Radius;
@@ -69,8 +84,9 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
 
         if (!placementFrames.IsEmpty)
         {
-            // retail: CPartArray::SetPlacementFrame (acclient.c:326817) -> CSequence::set_placement_frame, the Default (0x65)
-            _sequence.SetPlacementFrame(new AnimFrame(placementFrames.ToArray(), null, 0), 0x65);
+            // retail: CPartArray::SetPlacementFrame (acclient.c:326817) -> CSequence::set_placement_frame: the entry found,
+            // labelled with its id (0x65 when the setup has a Resting entry, else 0, the Default entry retail falls back to)
+            _sequence.SetPlacementFrame(new AnimFrame(placementFrames.ToArray(), null, 0), placementId);
         }
     }
 
@@ -144,8 +160,21 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
     public uint CellId { get; private set; }
 
     /// <inheritdoc />
+    /// <exception cref="ArgumentException"><paramref name="quantum"/> is NaN, infinite or longer than
+    /// <see cref="PhysicsGlobals.HugeQuantum"/> (2 s, the longest frame the object's update simulates) either way (state
+    /// unchanged).</exception>
     // retail: CPartArray::Update (acclient.c:325139)
-    public void Update(float quantum, ref Frame offsetFrame) => _sequence.Update(quantum, ref offsetFrame);
+    public void Update(float quantum, ref Frame offsetFrame)
+    {
+        // non-retail: the quantum's domain, checked where a client can pass it (retail takes any float: a NaN made the
+        // sequence's frame number NaN for good, a huge one played an unbounded number of passes)
+        if (!(Math.Abs(quantum) <= PhysicsGlobals.HugeQuantum))
+        {
+            throw new ArgumentException($"The quantum must be finite and within ±{PhysicsGlobals.HugeQuantum} s.", nameof(quantum));
+        }
+
+        _sequence.Update(quantum, ref offsetFrame);
+    }
 
     /// <inheritdoc />
     /// <exception cref="ArgumentException">The origin is NaN or infinite (state unchanged).</exception>
@@ -158,6 +187,28 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
         }
 
         _frame = frame;
+        UpdateParts(frame);
+    }
+
+    // The parts the animation frame covers take the object's frame combined with their animation frame; the others stay
+    // where they were. Lazily: the snapshot is recorded, and only the parts the previous snapshot covered and this one does
+    // not are combined now.
+    // retail: CPartArray::UpdateParts (acclient.c:326600)
+    private void UpdateParts(in Frame frame)
+    {
+        AnimFrame? f = _sequence.CurrentAnimFrame;
+        int covered = f is null ? 0 : Math.Min(NumParts, f.NumParts);
+        for (int i = covered; i < _snapshotCovered; i++)
+        {
+            Frame r = Frame.Identity;
+            CombineScaled(ref r, _snapshotFrame, _snapshotAnimFrame!.Frames[i], _snapshotScale);
+            _partFrames[i] = r;
+        }
+
+        _snapshotFrame = frame;
+        _snapshotAnimFrame = f;
+        _snapshotScale = _scale;
+        _snapshotCovered = covered;
     }
 
     /// <inheritdoc />
@@ -231,29 +282,28 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
     }
 
     /// <summary>
-    /// Part <paramref name="index"/>'s frame in the world: the object's frame combined with the part's local frame, its
-    /// origin scaled (retail <c>CPartArray::UpdateParts</c>, acclient.c:326600). A part the playing animation frame does not
-    /// cover is left where the object is.
+    /// Part <paramref name="index"/>'s frame in the world as the last <see cref="SetFrame"/> placed it (retail
+    /// <c>CPhysicsPart::pos.frame</c>, written by <c>CPartArray::UpdateParts</c>, acclient.c:326600): the object's frame
+    /// combined with the part's frame in the animation frame playing then, its origin scaled. A part that animation frame did
+    /// not cover stays where an earlier one put it (the identity before any), as in retail.
     /// </summary>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="index"/> is not a part.</exception>
     public Frame GetPartFrame(int index)
     {
         ArgumentOutOfRangeException.ThrowIfNegative(index);
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(index, NumParts);
-        AnimFrame? f = _sequence.CurrentAnimFrame;
-        if (f is null || index >= f.NumParts)
+        if (index >= _snapshotCovered)
         {
-            return _frame;
+            return _partFrames[index];
         }
 
         Frame result = Frame.Identity;
-        CombineScaled(ref result, _frame, f.Frames[index], _scale);
+        CombineScaled(ref result, _snapshotFrame, _snapshotAnimFrame!.Frames[index], _snapshotScale);
         return result;
     }
 
     /// <summary>Every part's world frame (<see cref="GetPartFrame"/>) into <paramref name="destination"/>, for drawing.</summary>
     /// <exception cref="ArgumentException"><paramref name="destination"/> is shorter than <see cref="NumParts"/>.</exception>
-    // retail: CPartArray::UpdateParts (acclient.c:326600)
     public void CopyPartFrames(Span<Frame> destination)
     {
         if (destination.Length < NumParts)
@@ -261,19 +311,17 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
             throw new ArgumentException("The destination needs one frame per part.", nameof(destination));
         }
 
-        AnimFrame? f = _sequence.CurrentAnimFrame;
-        int covered = f is null ? 0 : Math.Min(NumParts, f.NumParts);
         for (int i = 0; i < NumParts; i++)
         {
-            if (i < covered)
+            if (i < _snapshotCovered)
             {
                 Frame r = Frame.Identity;
-                CombineScaled(ref r, _frame, f!.Frames[i], _scale);
+                CombineScaled(ref r, _snapshotFrame, _snapshotAnimFrame!.Frames[i], _snapshotScale);
                 destination[i] = r;
             }
             else
             {
-                destination[i] = _frame;
+                destination[i] = _partFrames[i];
             }
         }
     }
