@@ -11,9 +11,9 @@ namespace AcDream.Core.Physics.Objects.Parts;
 /// A part array that plays a setup's motion table and animations (retail <c>CPartArray</c> with its
 /// <c>motion_table_manager</c> and <c>sequence</c>): the motion interpreter's motions go to the retail motion table
 /// (<see cref="MotionTablePlayer"/>), each step plays the sequence (<c>CSequence::update</c>: the animations' root motion,
-/// the motion data's velocity and omega, the frames' hooks), and each part's frame for drawing is the playing animation
-/// frame's (<see cref="GetPartLocalFrame"/>, <see cref="GetPartFrame"/>). <see cref="SimplePartArray"/> stays the part array
-/// of an object without animations.
+/// the motion data's velocity and omega, the frames' hooks), and each part's frame for drawing is placed at each
+/// <see cref="SetFrame"/> from the animation frame playing then (<see cref="GetPartFrame"/>; <see cref="GetPartLocalFrame"/>
+/// reads the playing frame itself). <see cref="SimplePartArray"/> stays the part array of an object without animations.
 /// </summary>
 /// <remarks>The setup's fields are plain constructor inputs (its physics, part count and default placement frame); the
 /// motion table comes from its bytes (<see cref="MotionTable.UnPack"/>), the animations from an
