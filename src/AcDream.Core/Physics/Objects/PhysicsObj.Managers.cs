@@ -156,10 +156,20 @@ public sealed partial class PhysicsObj
     public double MaxConstraintDistance => (_position.ObjCellId & 0xFFFFu) >= 0x100u ? 20.0 : 50.0;
 
     /// <summary>Bounding radius, metres: the part array's (<see cref="Parts.IPartArray.Radius"/>), 0 without one. Retail
-    /// <c>CPhysicsObj::GetRadius</c>, which hands back the part array's float (in x87's st0; every caller stores it as a
-    /// float).</summary>
+    /// <c>CPhysicsObj::GetRadius</c>, which hands back the setup's radius times the scale in x87's st0; the callers that
+    /// store it as a float get this value.</summary>
     // retail: CPhysicsObj::GetRadius (acclient.c:315672)
     public float Radius => PartArray is not null ? PartArray.Radius : 0f;
+
+    // retail: CPhysicsObj::GetRadius (acclient.c:315672) as DetectionManager::CheckDetection (acclient.c:327020) uses it: the
+    // unrounded product of CPartArray::GetRadius (an AnimatedPartArray's setup radius times scale.z), added in double; a part
+    // array whose radius is a plain float (SimplePartArray, a client's own) hands back that float
+    internal double RadiusInDouble => PartArray switch
+    {
+        null => 0.0,
+        AnimatedPartArray animated => animated.RadiusInDouble,
+        var parts => parts.Radius,
+    };
 
     /// <summary>Height, metres: the part array's (<see cref="Parts.IPartArray.Height"/>), 0 without one. Retail
     /// <c>CPhysicsObj::GetHeight</c> (the part array's float).</summary>
