@@ -212,7 +212,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>
     /// What keeps this object from walking, stepping and colliding as a retail creature would: <see cref="ObjectSetupIssues.None"/>
-    /// for a creature built from a Setup (<see cref="SimplePartArray(SetupPhysics, int)"/>) with a motion table, with a movement manager, entered
+    /// for a creature built from a Setup (<see cref="SimplePartArray(SetupPhysics, int)"/>) with a motion table, with a weenie and a movement manager, entered
     /// into a world over terrain. Cheap; not part of the tick. Read it once the object is in place — after
     /// <see cref="EnterWorld"/> and, for the player, after setting <see cref="World.PhysicsWorld.Player"/> (which gives it its movement
     /// manager); before them it reports <see cref="ObjectSetupIssues.NotInCell"/> and
@@ -250,6 +250,11 @@ public sealed partial class PhysicsObj
             if (Movement is null)
             {
                 issues |= ObjectSetupIssues.NoMovementManager;
+            }
+
+            if (Weenie is null && Movement is null or Motion.MovementManager)
+            {
+                issues |= ObjectSetupIssues.NoWeenie;
             }
 
             if (World.IsFreeSpace)
