@@ -334,8 +334,8 @@ public sealed class PlayerInput
     }
 
     /// <summary>The run key: <c>set_hold_run(held XOR UITogglesRun, 1)</c>. (<c>CommandInterpreter::UpdateToggleRun</c>,
-    /// acclient.c:717626, would re-apply this XOR with the stored key, but nothing in the decompilation calls it: no direct
-    /// call, and none of the interpreter's virtual call sites is on the option's path.)</summary>
+    /// acclient.c:717626, would re-apply this XOR with the stored key, but nothing in the decompilation calls it directly
+    /// and the option's handler, acclient.c:435916, calls <c>set_hold_run</c> itself.)</summary>
     // retail: CommandInterpreter::SetHoldRun (acclient.c:716977)
     private void SetHoldRun(bool held)
     {
