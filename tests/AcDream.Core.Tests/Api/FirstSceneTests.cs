@@ -106,6 +106,8 @@ public sealed class FirstSceneTests
         }
 
         Assert.Equal(10f, player.Position.Frame.Origin.Z);
+        Assert.Equal(ObjectSetupIssues.NoWeenie, player.SetupIssues);       // no PlayerWeenie: run rate 1
+        player.Weenie = new PlayerWeenie();
         Assert.Equal(ObjectSetupIssues.None, player.SetupIssues);
     }
 
@@ -153,7 +155,8 @@ public sealed class FirstSceneTests
         var body = new SimplePartArray(SetupPhysics.Human);
         creature.PartArray = body;
         Assert.True(creature.EnterWorld(Spawn(terrain)));
-        Assert.Equal(ObjectSetupIssues.NoMovementManager | ObjectSetupIssues.NoMotionTable, creature.SetupIssues);
+        Assert.Equal(ObjectSetupIssues.NoMovementManager | ObjectSetupIssues.NoMotionTable | ObjectSetupIssues.NoWeenie,
+            creature.SetupIssues);
         body.SequenceVelocity = new Vector3(0f, 3f, 0f);
         for (int k = 1; k <= 20; k++)
         {
@@ -187,7 +190,7 @@ public sealed class FirstSceneTests
         var free = new PhysicsWorld();
         PhysicsObj bare = free.CreateObject(1);
         Assert.Equal(ObjectSetupIssues.NoPartArray | ObjectSetupIssues.NoMovementManager | ObjectSetupIssues.FreeSpaceSweep
-            | ObjectSetupIssues.NotInCell, bare.SetupIssues);
+            | ObjectSetupIssues.NotInCell | ObjectSetupIssues.NoWeenie, bare.SetupIssues);
 
         // README's old recipe: a part array of retail's no-setup step heights (0.01 m).
         TerrainWorld terrain = Flat();

@@ -76,12 +76,14 @@ public sealed class MotionSilentMistakeTests
         without.PartArray = new SimplePartArray(SetupPhysics.Human);
         Assert.True(without.EnterWorld(SyntheticTerrain.OnGround(terrain, SyntheticTerrain.CellId(0x80, 0x80, 4, 4), 100f, 100f)));
         world.Player = without;
+        without.Weenie = new PlayerWeenie();
         Assert.Equal(ObjectSetupIssues.NoMotionTable, without.SetupIssues);
 
         PhysicsObj with = world.CreateObject(2);
         with.PartArray = new SimplePartArray(SetupPhysics.Human) { MotionPlayer = new SpeedOnlyMotionPlayer() };
         Assert.True(with.EnterWorld(SyntheticTerrain.OnGround(terrain, SyntheticTerrain.CellId(0x80, 0x80, 4, 4), 110f, 100f)));
         with.GetOrCreateMotionInterpreter();
+        with.Weenie = RemoteCreatureWeenie.Creature;
         Assert.Equal(ObjectSetupIssues.None, with.SetupIssues);
 
         // A client's own movement manager drives the body itself: no motion table is needed.

@@ -95,15 +95,17 @@ public class MovementEventApiTests
     }
 
     [Fact]
-    public void DoMotion_WithoutMovementManager_AnswersRetailsSeven()
+    public void DoMotion_WithoutMovementManager_AnswersNoMovementManager()
     {
         var world = new PhysicsWorld(0.0);
         PhysicsObj obj = world.CreateObject(1);
-        // acclient.c:317342: no movement manager -> 7, last_move_was_autonomous already set.
-        Assert.Equal(MotionError.NoMotionTable, obj.DoMotion(MotionCommand.WalkForward, new MovementParameters()));
+        // acclient.c:317342: no movement manager -> retail's 7 (NoMotionTable), last_move_was_autonomous already set; the
+        // port names what is missing (non-retail, docs/divergences.md).
+        Assert.Equal(MotionError.NoMovementManager, obj.DoMotion(MotionCommand.WalkForward, new MovementParameters()));
         Assert.Equal(7u, (uint)MotionError.NoMotionTable);
+        Assert.Equal(0x10007u, (uint)MotionError.NoMovementManager);
         Assert.True(obj.LastMoveWasAutonomous);
-        Assert.Equal(MotionError.NoMotionTable, obj.StopMotion(MotionCommand.WalkForward, new MovementParameters()));
+        Assert.Equal(MotionError.NoMovementManager, obj.StopMotion(MotionCommand.WalkForward, new MovementParameters()));
         Assert.Null(obj.Movement);
         Assert.Throws<ArgumentException>(() => obj.DoMotion(MotionCommand.WalkForward, default));
     }

@@ -34,7 +34,8 @@ public sealed class NoMovementManagerTests
         Assert.True(creature.EnterWorld(SyntheticTerrain.OnGround(terrain, SyntheticTerrain.CellId(Bx, By, 4, 4), 100f, 100f)));
         Assert.Null(world.Player);
         // Root motion is set directly here (no motion commands), so the missing motion table is reported beside it.
-        Assert.Equal(ObjectSetupIssues.NoMovementManager | ObjectSetupIssues.NoMotionTable, creature.SetupIssues);
+        Assert.Equal(ObjectSetupIssues.NoMovementManager | ObjectSetupIssues.NoMotionTable | ObjectSetupIssues.NoWeenie,
+            creature.SetupIssues);
         body.SequenceVelocity = new Vector3(0f, 3f, 0f);
 
         world.Tick(0.05);

@@ -128,7 +128,30 @@ public sealed class PlayerInputTests
         double now = 0;
         Run(s, ref now, 1.0);
         Assert.Equal(23.12f, s.Player.Position.Frame.Origin.Y, 3);
-        input.RunByDefault = false;                              // option off while the key is held: run
+    }
+
+    [Fact]
+    public void RunByDefault_SetWhileTheRunKeyIsHeld_AppliesTheOptionAlone()
+    {
+        // Retail's option handler sends set_hold_run(option) alone (ACCmdInterp::RecvNotice_PlayerOptionChanged, 435916);
+        // only the run key's own transitions send key XOR option (CommandInterpreter::SetHoldRun, 716977).
+        var s = new WalkingPlayerScene(new Vector3(100f, 20f, 0f));
+        var input = new PlayerInput(s.Player);
+        MotionInterp mi = s.Movement.GetOrCreateMotionInterpreter();
+        input.KeyDown(MovementKeys.Forward);
+        input.KeyDown(MovementKeys.Run);                         // 1 XOR 0: run
+        Assert.Equal(MotionCommand.RunForward, mi.InterpretedState.ForwardCommand);
+        input.RunByDefault = true;                               // set_hold_run(1): still running (key XOR option would walk)
+        Assert.Equal(MotionCommand.RunForward, mi.InterpretedState.ForwardCommand);
+        input.KeyUp(MovementKeys.Run);                           // 0 XOR 1: run
+        Assert.Equal(MotionCommand.RunForward, mi.InterpretedState.ForwardCommand);
+        input.KeyDown(MovementKeys.Run);                         // 1 XOR 1: walk
+        Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
+        input.RunByDefault = false;                              // set_hold_run(0): walk, the key still held
+        Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
+        input.KeyUp(MovementKeys.Run);                           // 0 XOR 0: walk
+        Assert.Equal(MotionCommand.WalkForward, mi.InterpretedState.ForwardCommand);
+        input.KeyDown(MovementKeys.Run);                         // 1 XOR 0: run
         Assert.Equal(MotionCommand.RunForward, mi.InterpretedState.ForwardCommand);
     }
 
@@ -229,6 +252,34 @@ public sealed class PlayerInputTests
         Assert.Equal(HoldKey.None, mi.RawState.CurrentHoldKey);
         input.KeyDown(MovementKeys.Forward);                     // the lists were cleared: a new press walks
         Assert.Equal(MotionCommand.WalkForward, mi.RawState.ForwardCommand);
+    }
+
+    [Fact]
+    public void ReleaseAll_WhileChargingAJump_CancelsTheCharge()
+    {
+        // LoseKeyboardFocus (716868) calls the interpreter's vtable slot 20, the jump cancel (ACCmdInterp::FinishJump ->
+        // ClientCombatSystem::FinishJump, 407624: jump_pending = 0, standing_longjump = 0), as Escape while charging does
+        // (402170-402175): the jump key's later release finds no charge and jumps nothing.
+        var s = new WalkingPlayerScene(new Vector3(100f, 20f, 0f));
+        var input = new PlayerInput(s.Player);
+        MotionInterp mi = s.Movement.GetOrCreateMotionInterpreter();
+        double now = 0;
+        Run(s, ref now, 0.5);
+        input.KeyDown(MovementKeys.Jump);
+        Assert.True(mi.StandingLongJump);                         // charged standing still on the ground
+        Run(s, ref now, 0.5);
+        Assert.Equal(0.5, input.JumpCharge, 9);
+        input.ReleaseAll();
+        Assert.Equal(0.0, input.JumpCharge);
+        Assert.False(mi.StandingLongJump);
+        Assert.Equal(MovementKeys.None, input.HeldKeys);
+        input.KeyUp(MovementKeys.Jump);                          // not held any more: nothing
+        Run(s, ref now, 0.5);
+        Assert.Equal(0f, s.Player.Position.Frame.Origin.Z);
+        Assert.Equal(0f, s.Player.Velocity.Z);
+        input.KeyDown(MovementKeys.Jump);                        // a new press charges from zero
+        Run(s, ref now, 0.25);
+        Assert.Equal(0.25, input.JumpCharge, 9);
     }
 
     [Theory]

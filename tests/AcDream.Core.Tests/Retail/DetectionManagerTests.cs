@@ -1,7 +1,9 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Managers;
+using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Tests.Replay.Harness;
 using AcDream.Core.Tests.Support;
 using Xunit;
@@ -39,6 +41,28 @@ public class DetectionManagerTests
         c.ObjectDetected = wasDetected;
         Assert.Equal(expected, dm.CheckDetection(c, s.Creature));
         Assert.Equal(detectedAfter, c.ObjectDetected);
+    }
+
+    [Fact]
+    public void CheckDetection_AddsTheObjectsRadiusUnrounded()
+    {
+        // CheckDetection (327020) adds CPhysicsObj::GetRadius straight from st0: CPartArray::GetRadius's setup radius times
+        // scale.z unrounded. Radius 0.3f (0x3E99999A) at scale 0x3FC00155 (1.5000406503677368): the product
+        // 0.45001221299219907, as a float 0.45001220703125. At distance 5 + 0.45001220703125 (a float; the creature at
+        // y = 96 + that, exact) the product plus 5 exceeds the distance: inside, Entered (the float radius would make it
+        // equal: outside).
+        float scale = BitConverter.Int32BitsToSingle(0x3FC00155);
+        var s = new ManagerScene(new Vector3(96f, 96f + 5.45001220703125f, 0f));
+        s.Creature.PartArray = new AnimatedPartArray(new SetupPhysics(new[] { new Sphere(new Vector3(0f, 0f, 0.3f), 0.3f) },
+            ReadOnlySpan<CylSphere>.Empty, BitConverter.Int32BitsToSingle(0x3E99999A), 1.8f, 0.6f, 0.6f), 1, null, null);
+        s.Creature.SetScaleStatic(scale);
+        Assert.Equal(0.45001220703125f, s.Creature.Radius);
+        var dm = new DetectionManager(s.Player, new DetectionRecorder());
+        s.Player.DetectionManager = dm;
+        dm.CreateDetectionCylsphere(3, s.Creature.Id, 5f);
+        DetectionCylsphere c = dm.Find(3)!;
+        Assert.Equal(DetectionStatus.Entered, dm.CheckDetection(c, s.Creature));
+        Assert.True(c.ObjectDetected);
     }
 
     [Fact]

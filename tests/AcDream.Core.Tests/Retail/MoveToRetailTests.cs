@@ -96,8 +96,9 @@ public class MoveToRetailTests
     [InlineData(0x1EE0Fu, 20f, 0.6f, 0f, 15f, MotionCommand.WalkForward, HoldKey.Run, false)]
     // towards, 10 m: 9.4 <= 15 -> walk
     [InlineData(0x1EE0Fu, 10f, 0.6f, 0f, 15f, MotionCommand.WalkForward, HoldKey.None, false)]
-    // exactly 15.6 m: 15.0 > 15 is false -> walk
-    [InlineData(0x1EE0Fu, 15.6f, 0.6f, 0f, 15f, MotionCommand.WalkForward, HoldKey.None, false)]
+    // 15.6 m: retail subtracts in double on the x87 (346217): 15.6f - 0.6f = 15.000000357627869 > 15 -> run (a float
+    // subtraction rounds it to 15.0 and walks)
+    [InlineData(0x1EE0Fu, 15.6f, 0.6f, 0f, 15f, MotionCommand.WalkForward, HoldKey.Run, false)]
     // the melee approach's threshold 1.0 (replay README): 10 - 0.6 = 9.4 > 1 -> run
     [InlineData(0x1EE0Fu, 10f, 0.6f, 0f, 1f, MotionCommand.WalkForward, HoldKey.Run, false)]
     // within distance_to_object: no command (the key still follows the rule: 0.5 - 0.6 < 15 -> walk)
@@ -118,6 +119,9 @@ public class MoveToRetailTests
     [InlineData(0x1u | 0x300u, 3f, 5f, 1f, 15f, (MotionCommand)0, HoldKey.None, false)]
     // towards and away, nearer than min: walk backwards, moving away
     [InlineData(0x1u | 0x300u, 0.5f, 5f, 1f, 15f, MotionCommand.WalkBackwards, HoldKey.None, true)]
+    // towards and away at 0.00022999999f (0x39712C27) from min 0.00003f: in double (346157) 0.00019999999131 < EPSILON
+    // 0.00019999999495 -> walk backwards, moving away (a float subtraction rounds the difference up to EPSILON and stops)
+    [InlineData(0x1u | 0x300u, 0.00022999999f, 5f, 0.00003f, 15f, MotionCommand.WalkBackwards, HoldKey.None, true)]
     // towards and away, beyond dto: walk forward
     [InlineData(0x1u | 0x300u, 6f, 5f, 1f, 15f, MotionCommand.WalkForward, HoldKey.None, false)]
     public void GetCommand_IsRetailsTable(uint flags, float distance, float dto, float min, float threshold,

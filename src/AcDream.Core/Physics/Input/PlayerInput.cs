@@ -83,16 +83,19 @@ public sealed class PlayerInput
 
     /// <summary>
     /// The "run by default" option (retail's toggle-run player option, <c>PlayerModule::ToggleRun</c>): the character runs
-    /// unless <see cref="MovementKeys.Run"/> is held, which then walks. Setting it re-applies the hold key at once
-    /// (<c>ACCmdInterp::RecvNotice_PlayerOptionChanged</c>, acclient.c:435916).
+    /// unless <see cref="MovementKeys.Run"/> is held, which then walks. Setting it applies the option alone at once, as
+    /// retail's option handler does (<c>ACCmdInterp::RecvNotice_PlayerOptionChanged</c>, acclient.c:435916): set while the
+    /// run key is held, the character runs with the option on and walks with it off until the key's next press or release,
+    /// which applies key XOR option again.
     /// </summary>
     public bool RunByDefault
     {
         get => _runByDefault;
+        // retail: ACCmdInterp::RecvNotice_PlayerOptionChanged (acclient.c:435916): set_hold_run(UITogglesRun(), 1)
         set
         {
             _runByDefault = value;
-            ApplyHoldRun();
+            _interp.SetHoldRun(value, cancelMoveToOnChange: true);
         }
     }
 
@@ -166,10 +169,9 @@ public sealed class PlayerInput
         }
     }
 
-    /// <summary>Releases every movement key and the run key at once, as when the client window loses the keyboard: the lists
-    /// are cleared and the player stands (Ready), stops turning and side-stepping (retail
-    /// <c>CommandInterpreter::LoseKeyboardFocus</c>, acclient.c:716868). A jump being charged stays charged: the jump key's
-    /// release still jumps.</summary>
+    /// <summary>Releases every key at once, as when the client window loses the keyboard: the lists are cleared, the run key
+    /// is dropped, a jump being charged is cancelled (the jump key's later release jumps nothing) and the player stands
+    /// (Ready), stops turning and side-stepping (retail <c>CommandInterpreter::LoseKeyboardFocus</c>, acclient.c:716868).</summary>
     /// <exception cref="InvalidOperationException">The player was removed from its world; nothing changes.</exception>
     // retail: CommandInterpreter::LoseKeyboardFocus (acclient.c:716868)
     public void ReleaseAll()
@@ -178,9 +180,10 @@ public sealed class PlayerInput
         _substateList.ClearKeyboardCommands();
         _turnList.ClearKeyboardCommands();
         _sidestepList.ClearKeyboardCommands();
-        _held &= MovementKeys.Jump;
-        SetHoldRun(false);
-        ApplyCurrentMovement();
+        _held = MovementKeys.None;
+        SetHoldRun(false);                                       // vtable slot 8 with 0
+        FinishJump();                                            // vtable slot 20: ACCmdInterp::FinishJump, the jump cancel
+        ApplyCurrentMovement();                                  // slot 7 (then slot 19, SendMovementEvent: the client's)
     }
 
     private const int KeyCount = 8;
@@ -330,15 +333,15 @@ public sealed class PlayerInput
         }
     }
 
+    /// <summary>The run key: <c>set_hold_run(held XOR UITogglesRun, 1)</c>. (<c>CommandInterpreter::UpdateToggleRun</c>,
+    /// acclient.c:717626, would re-apply this XOR with the stored key, but nothing in the decompilation calls it directly
+    /// and the option's handler, acclient.c:435916, calls <c>set_hold_run</c> itself.)</summary>
     // retail: CommandInterpreter::SetHoldRun (acclient.c:716977)
     private void SetHoldRun(bool held)
     {
         _holdRun = held;
-        ApplyHoldRun();
+        _interp.SetHoldRun(_holdRun != _runByDefault, cancelMoveToOnChange: true);
     }
-
-    // CMotionInterp::set_hold_run(hold_run XOR UITogglesRun, 1), as SetHoldRun (acclient.c:716977) and the option change (435916) send it
-    private void ApplyHoldRun() => _interp.SetHoldRun(_holdRun != _runByDefault, cancelMoveToOnChange: true);
 
     /// <summary>With no key held: stand (Ready), stop turning and side-stepping.</summary>
     // retail: CommandInterpreter::ApplyCurrentMovement (acclient.c:717026), lists empty, no auto-run
@@ -386,10 +389,18 @@ public sealed class PlayerInput
             extent = MinJumpExtent;
         }
 
-        // retail: ClientCombatSystem::FinishJump (acclient.c:407624)
+        FinishJump();
+        LastError = _interp.Jump(extent, out _);
+    }
+
+    /// <summary>Ends the jump charge (the power bar empties) and the standing long jump; also the jump cancel, which
+    /// <c>LoseKeyboardFocus</c>, Escape while charging (acclient.c:402170-402175), starting an attack and opening the chat
+    /// reach through the interpreter's vtable slot 20 (<c>ACCmdInterp::FinishJump</c>, acclient.c:435852).</summary>
+    // retail: ClientCombatSystem::FinishJump (acclient.c:407624)
+    private void FinishJump()
+    {
         _jumpPending = false;
         _interp.StandingLongJump = false;
-        LastError = _interp.Jump(extent, out _);
     }
 
     // retail: ClientCombatSystem::GetPowerBarLevel (acclient.c:407918)

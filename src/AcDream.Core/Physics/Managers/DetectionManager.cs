@@ -164,13 +164,14 @@ public sealed class DetectionManager : IDetectionManager
     }
 
     /// <summary>Whether <paramref name="obj"/> entered or left <paramref name="detcyl"/> since the last check: inside when the
-    /// float distance is below the cylinder's radius plus the object's (summed in x87 double).</summary>
+    /// float distance is below the cylinder's radius plus the object's (summed in x87 double, the object's radius unrounded:
+    /// <c>GetRadius</c>'s product straight from st0).</summary>
     // retail: DetectionManager::CheckDetection (acclient.c:327020)
     internal DetectionStatus CheckDetection(DetectionCylsphere detcyl, PhysicsObj obj)
     {
         float radius = detcyl.Radius;
         float distance = (float)PhysicsObj.Position.DistanceInDouble(obj.Position);
-        double objRadius = obj.Radius;
+        double objRadius = obj.RadiusInDouble;
         bool detected = detcyl.ObjectDetected;
         if (objRadius + radius <= distance)
         {

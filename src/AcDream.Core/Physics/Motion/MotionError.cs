@@ -9,8 +9,16 @@ public enum MotionError : uint
     /// <summary>Success.</summary>
     None = 0,
 
-    /// <summary>The object has no movement manager or its part array has no motion table (7).</summary>
+    /// <summary>The object's part array has no motion table, or it has no part array (7). (Retail's
+    /// <c>CPhysicsObj::DoMotion</c> also answers 7 for an object without a movement manager; here that is
+    /// <see cref="NoMovementManager"/>.)</summary>
     NoMotionTable = 7,
+
+    /// <summary>Non-retail: the object has no retail movement manager (none yet, or a client's own), so
+    /// <see cref="Objects.PhysicsObj.DoMotion"/> / <see cref="Objects.PhysicsObj.StopMotion"/> started nothing (retail
+    /// answers 7, <see cref="NoMotionTable"/>). <see cref="Objects.PhysicsObj.GetOrCreateMotionInterpreter"/> creates one.
+    /// 0x10007, outside retail's error numbers.</summary>
+    NoMovementManager = 0x10007,
 
     /// <summary>The interpreter has no physics object (8).</summary>
     NoPhysicsObject = 8,

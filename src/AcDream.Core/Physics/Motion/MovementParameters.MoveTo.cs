@@ -27,7 +27,7 @@ public partial struct MovementParameters
     {
         if (currDistance <= (double)DistanceToObject)
         {
-            if (currDistance - MinDistance >= PhysicsGlobals.Epsilon)
+            if ((double)currDistance - MinDistance >= PhysicsGlobals.Epsilon)    // x87: the difference in double
             {
                 command = 0;
             }
@@ -84,7 +84,7 @@ public partial struct MovementParameters
         if ((bits & (uint)MovementParameterFlags.CanCharge) != 0
             || ((bits & (uint)MovementParameterFlags.CanRun) != 0
                 && ((bits & (uint)MovementParameterFlags.CanWalk) == 0
-                    || currDistance - DistanceToObject > WalkRunThreshold)))
+                    || (double)currDistance - DistanceToObject > WalkRunThreshold)))  // x87: the difference in double
         {
             key = HoldKey.Run;
         }

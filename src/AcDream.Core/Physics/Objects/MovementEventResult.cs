@@ -25,6 +25,14 @@ public enum MovementEventResult
     NotApplied = 3,
 
     /// <summary>Applied: the object switched to the event's style and its motion interpreter (type 0) or move-to manager
-    /// (types 6-9) runs the movement.</summary>
+    /// (types 6-9) runs the movement; its part array's motion table plays it, so the object moves.</summary>
     Applied = 4,
+
+    /// <summary>Unpacked as <see cref="Applied"/> (the stamps, the style, the interpreter's state or the move-to are taken),
+    /// but the object cannot play it: it has no part array, or its part array has no motion table
+    /// (<see cref="Parts.IPartArray.MotionPlayer"/> null), so the motion commands reach nothing and the body does not move
+    /// while its interpreter reports the motion. <see cref="PhysicsObj.SetupIssues"/> names it
+    /// (<see cref="ObjectSetupIssues.NoMotionTable"/>, <see cref="ObjectSetupIssues.NoPartArray"/>). Non-retail: retail's
+    /// entry point answers nothing.</summary>
+    NoMotionTable = 5,
 }

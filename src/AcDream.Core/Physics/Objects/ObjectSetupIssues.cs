@@ -43,4 +43,12 @@ public enum ObjectSetupIssues
     /// motion table, so the object does not walk, run or turn. Give the part array one, e.g.
     /// <see cref="Motion.SpeedOnlyMotionPlayer"/>. Not reported for an object whose movement manager is a client's own.</summary>
     NoMotionTable = 1 << 6,
+
+    /// <summary>No weenie (<see cref="PhysicsObj.Weenie"/> null) while the object moves through retail's movement manager (or
+    /// has none yet): the motion interpreter takes retail's no-weenie branch, run rate 1 (a run is capped at 4 m/s, and the
+    /// run rate a server MoveTo carries, <see cref="Motion.MotionInterp.MyRunRate"/>, is ignored) and a 10 m/s jump. Retail
+    /// gives every object a weenie (<c>ACCWeenieObject</c>): use <see cref="Motion.RemoteCreatureWeenie.Creature"/> or
+    /// <see cref="Motion.RemoteCreatureWeenie.Player"/> for a remote creature or player, <see cref="Motion.PlayerWeenie"/>
+    /// for the player. Not reported for an object whose movement manager is a client's own.</summary>
+    NoWeenie = 1 << 7,
 }

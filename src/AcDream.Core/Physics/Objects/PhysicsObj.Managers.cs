@@ -156,10 +156,20 @@ public sealed partial class PhysicsObj
     public double MaxConstraintDistance => (_position.ObjCellId & 0xFFFFu) >= 0x100u ? 20.0 : 50.0;
 
     /// <summary>Bounding radius, metres: the part array's (<see cref="Parts.IPartArray.Radius"/>), 0 without one. Retail
-    /// <c>CPhysicsObj::GetRadius</c>, which hands back the part array's float (in x87's st0; every caller stores it as a
-    /// float).</summary>
+    /// <c>CPhysicsObj::GetRadius</c>, which hands back the setup's radius times the scale in x87's st0; the callers that
+    /// store it as a float get this value.</summary>
     // retail: CPhysicsObj::GetRadius (acclient.c:315672)
     public float Radius => PartArray is not null ? PartArray.Radius : 0f;
+
+    // retail: CPhysicsObj::GetRadius (acclient.c:315672) as DetectionManager::CheckDetection (acclient.c:327020) uses it: the
+    // unrounded product of CPartArray::GetRadius (an AnimatedPartArray's setup radius times scale.z), added in double; a part
+    // array whose radius is a plain float (SimplePartArray, a client's own) hands back that float
+    internal double RadiusInDouble => PartArray switch
+    {
+        null => 0.0,
+        AnimatedPartArray animated => animated.RadiusInDouble,
+        var parts => parts.Radius,
+    };
 
     /// <summary>Height, metres: the part array's (<see cref="Parts.IPartArray.Height"/>), 0 without one. Retail
     /// <c>CPhysicsObj::GetHeight</c> (the part array's float).</summary>
@@ -202,7 +212,7 @@ public sealed partial class PhysicsObj
 
     /// <summary>
     /// What keeps this object from walking, stepping and colliding as a retail creature would: <see cref="ObjectSetupIssues.None"/>
-    /// for a creature built from a Setup (<see cref="SimplePartArray(SetupPhysics, int)"/>) with a motion table, with a movement manager, entered
+    /// for a creature built from a Setup (<see cref="SimplePartArray(SetupPhysics, int)"/>) with a motion table, with a weenie and a movement manager, entered
     /// into a world over terrain. Cheap; not part of the tick. Read it once the object is in place — after
     /// <see cref="EnterWorld"/> and, for the player, after setting <see cref="World.PhysicsWorld.Player"/> (which gives it its movement
     /// manager); before them it reports <see cref="ObjectSetupIssues.NotInCell"/> and
@@ -240,6 +250,11 @@ public sealed partial class PhysicsObj
             if (Movement is null)
             {
                 issues |= ObjectSetupIssues.NoMovementManager;
+            }
+
+            if (Weenie is null && Movement is null or Motion.MovementManager)
+            {
+                issues |= ObjectSetupIssues.NoWeenie;
             }
 
             if (World.IsFreeSpace)

@@ -60,7 +60,13 @@ public sealed partial class PhysicsObj
         }
 
         _lastMoveWasAutonomous = message.Autonomous;
-        return UnPackMovement(message) ? MovementEventResult.Applied : MovementEventResult.NotApplied;
+        if (!UnPackMovement(message))
+        {
+            return MovementEventResult.NotApplied;
+        }
+
+        // non-retail: "Applied" means the object will move; without a motion table the result names what is missing
+        return PartArray?.MotionPlayer is null ? MovementEventResult.NoMotionTable : MovementEventResult.Applied;
     }
 
     // Every refusal before anything changes: the entry point's ArgumentException contract.
@@ -125,8 +131,8 @@ public sealed partial class PhysicsObj
     /// <summary>Starts a motion command as this client's own (retail <c>CPhysicsObj::DoMotion</c>):
     /// <see cref="LastMoveWasAutonomous"/> becomes true, then the movement manager runs it
     /// (<see cref="MovementManager.DoMotion"/>).</summary>
-    /// <returns>The motion error; <see cref="MotionError.NoMotionTable"/> (7) when the object has no movement manager
-    /// yet (retail's answer) or a client's own, nothing started.</returns>
+    /// <returns>The motion error; <see cref="MotionError.NoMovementManager"/> when the object has no movement manager yet
+    /// or a client's own, nothing started (retail answers 7, <see cref="MotionError.NoMotionTable"/>).</returns>
     /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed is NaN
     /// or infinite (nothing changes).</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
@@ -137,14 +143,15 @@ public sealed partial class PhysicsObj
         MotionChecks.Check(p);
         Touch();
         _lastMoveWasAutonomous = true;
-        return Movement is MovementManager mm ? mm.DoMotion(motion, p) : MotionError.NoMotionTable;
+        // non-retail: retail answers 7 (NoMotionTable) without a movement manager; the error names what is missing
+        return Movement is MovementManager mm ? mm.DoMotion(motion, p) : MotionError.NoMovementManager;
     }
 
     /// <summary>Stops a motion command as this client's own (retail <c>CPhysicsObj::StopMotion</c>):
     /// <see cref="LastMoveWasAutonomous"/> becomes true, then the movement manager stops it
     /// (<see cref="MovementManager.StopMotion"/>).</summary>
-    /// <returns>The motion error; <see cref="MotionError.NoMotionTable"/> (7) without a movement manager or with a client's
-    /// own.</returns>
+    /// <returns>The motion error; <see cref="MotionError.NoMovementManager"/> without a movement manager or with a
+    /// client's own (retail answers 7, <see cref="MotionError.NoMotionTable"/>).</returns>
     /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed is NaN
     /// or infinite (nothing changes).</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
@@ -155,6 +162,7 @@ public sealed partial class PhysicsObj
         MotionChecks.Check(p);
         Touch();
         _lastMoveWasAutonomous = true;
-        return Movement is MovementManager mm ? mm.StopMotion(motion, p) : MotionError.NoMotionTable;
+        // non-retail: retail answers 7 (NoMotionTable) without a movement manager; the error names what is missing
+        return Movement is MovementManager mm ? mm.StopMotion(motion, p) : MotionError.NoMovementManager;
     }
 }

@@ -287,7 +287,8 @@ public sealed partial class PhysicsWorld
     /// seconds (is it in milliseconds?).</returns>
     /// <exception cref="ArgumentException"><paramref name="now"/> is NaN, infinite or not within ±2^40 s (state unchanged).</exception>
     /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick (re-entrant tick); nothing
-    /// changes and the tick in progress goes on.</exception>
+    /// changes and the tick in progress goes on. Or, with <see cref="MaxConsecutiveDiscardedFrames"/> set, this tick made
+    /// that many consecutive discarded frames (thrown after the tick finished as retail's).</exception>
     /// <remarks>An exception thrown by a client callback (collision or player listener, step observer, hooks, seams) propagates
     /// out of the tick uncaught. The world stays usable: the next tick runs, the pools are full again, and the objects the
     /// throwing tick did not reach are updated by the next one over the whole elapsed time (docs/stability.md, "After a
@@ -304,7 +305,8 @@ public sealed partial class PhysicsWorld
     /// </summary>
     /// <returns>True when the objects were visited (at least MinQuantum had passed; a frame longer than
     /// <see cref="PhysicsProfile.HugeQuantum"/> is visited but discarded, see <see cref="DiscardedFrames"/>).</returns>
-    /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick; nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">Called from a callback inside this world's tick; nothing changes. Or the
+    /// <see cref="MaxConsecutiveDiscardedFrames"/> limit was reached (after the tick finished).</exception>
     /// <remarks>A client callback's exception propagates; the world stays usable (see <see cref="Tick"/>).</remarks>
     // retail: CPhysics::UseTime (acclient.c:311334)
     public bool UseTime()
@@ -316,6 +318,7 @@ public sealed partial class PhysicsWorld
             // non-retail: the discarded frame is counted for the client (retail resyncs silently)
             CountDiscardedFrame(quantum);
             LastUpdate = CurrentTime;
+            ThrowIfDiscardLimitReached();
             return false;
         }
 
@@ -364,6 +367,15 @@ public sealed partial class PhysicsWorld
         }
 
         LastUpdate = CurrentTime;
+        if (quantum > Profile.HugeQuantum)
+        {
+            ThrowIfDiscardLimitReached();
+        }
+        else
+        {
+            _consecutiveDiscardedFrames = 0;
+        }
+
         return true;
     }
 
@@ -384,10 +396,46 @@ public sealed partial class PhysicsWorld
     /// went back, above <see cref="PhysicsProfile.HugeQuantum"/> otherwise; 0 until a frame is discarded.</summary>
     public double LastDiscardedFrameSeconds { get; private set; }
 
+    /// <summary>
+    /// Opt-in strict clock check (non-retail; 0, the default, is retail's behaviour: discarded frames are only counted):
+    /// when positive, the tick that makes this many consecutive discarded frames (see <see cref="DiscardedFrames"/>; a tick
+    /// that runs the objects normally resets the run) throws an <see cref="InvalidOperationException"/> after finishing as
+    /// retail does, so a clock in milliseconds (every 60 fps frame 16.7 "seconds" long) is reported instead of freezing the
+    /// world. The world stays usable; a later discarded frame throws again.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException">Set to a negative value (state unchanged).</exception>
+    public int MaxConsecutiveDiscardedFrames
+    {
+        get => _maxConsecutiveDiscardedFrames;
+        set
+        {
+            ArgumentOutOfRangeException.ThrowIfNegative(value);
+            _maxConsecutiveDiscardedFrames = value;
+        }
+    }
+
+    private int _maxConsecutiveDiscardedFrames;
+    private int _consecutiveDiscardedFrames;
+
     private void CountDiscardedFrame(double quantum)
     {
         DiscardedFrames++;
         LastDiscardedFrameSeconds = quantum;
+        if (_consecutiveDiscardedFrames < int.MaxValue)
+        {
+            _consecutiveDiscardedFrames++;
+        }
+    }
+
+    private void ThrowIfDiscardLimitReached()
+    {
+        if (_maxConsecutiveDiscardedFrames > 0 && _consecutiveDiscardedFrames >= _maxConsecutiveDiscardedFrames)
+        {
+            throw new InvalidOperationException(
+                $"{_consecutiveDiscardedFrames} consecutive frames were discarded (the last {LastDiscardedFrameSeconds} s long; "
+                + "retail discards a frame longer than 2 s or a clock going back): Tick takes the client clock in seconds "
+                + "(is it in milliseconds?).");
+        }
     }
 
     private void ThrowIfInTick()

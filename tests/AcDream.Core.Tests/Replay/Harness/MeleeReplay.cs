@@ -98,7 +98,7 @@ public static class MeleeReplay
         var message = new MovementEventMessage();
         var players = new List<MeleePlayerSample>();
         var monsterSamples = new List<MeleeMonsterSample>();
-        int[] results = new int[5];
+        int[] results = new int[6];
         var previous = new Dictionary<uint, Vector3>();
         double firstMoveTo = double.PositiveInfinity;
         foreach (MeleeMovement m in rec.Movements)

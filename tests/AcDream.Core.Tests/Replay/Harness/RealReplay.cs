@@ -244,7 +244,7 @@ public static class RealReplay
         var targets = Targets(rec);
         var samples = new List<RealSample>();
         int[] byType = new int[10];
-        int[] results = new int[5];
+        int[] results = new int[6];
         int ui = 1, mi = 0, ti = 0;
         double settleUntil = first.T + SettleTime;
         uint block = first.Position.ObjCellId >> 16;

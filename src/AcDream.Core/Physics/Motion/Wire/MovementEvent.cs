@@ -103,7 +103,8 @@ public static class MovementEvent
         }
     }
 
-    // acclient.c:339526-339542: cancel the move-to, unstick, then switch to the style when the interpreter is in another.
+    // acclient.c:339518-339519: cancel the move-to, unstick; 339540-339542: switch to the style when the interpreter is in
+    // another.
     private static void BeginUnPack(MovementManager mm, PhysicsObj obj, MotionCommand style)
     {
         MotionInterp m = mm.GetOrCreateMotionInterpreter();

@@ -135,7 +135,10 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
 
     /// <inheritdoc />
     // retail: CPartArray::GetRadius (acclient.c:325381): the setup's radius times scale.z
-    public float Radius => (float)((double)_setupRadius * _scale.Z);
+    public float Radius => (float)RadiusInDouble;
+
+    // retail: CPartArray::GetRadius (acclient.c:325381): the product as x87 hands it back, before a caller stores it as float
+    internal double RadiusInDouble => (double)_setupRadius * _scale.Z;
 
     /// <inheritdoc />
     // retail: CPartArray::GetHeight (acclient.c:325387): the setup's height times scale.z
