@@ -196,7 +196,7 @@ public class SetupEntryTests
         var w = new RetailDataWriter();
         w.UInt32(0x02000001).UInt32(0).UInt32(0x40000000);
         var e = Assert.Throws<RetailDataFormatException>(() => SetupEntry.UnPack(w.ToArray()));
-        Assert.Equal(12, e.Offset); // the check runs after the count is read: 0 bytes remain for 2^30 parts
+        Assert.Equal(8, e.Offset); // the part count's own field (id @0, flags @4, count @8): 0 bytes remain for 2^30 parts
         Assert.Contains("part count", e.Reason);
     }
 

@@ -48,12 +48,13 @@ internal sealed class MotionData
     {
         var d = new MotionData();
         d.Id = r.ReadUInt32("MotionData id");
+        int numAnimsAt = r.Offset;
         byte numAnims = r.ReadByte("MotionData num_anims");
         d.Bitfield = r.ReadByte("MotionData bitfield");
         byte physics = r.ReadByte("MotionData physics flags");
         r.Align4();
         // An AnimData is 16 bytes (AnimData::UnPack reads four dwords), so the count is checked before the array is made.
-        int n = (int)r.CheckCount(numAnims, "MotionData anims", AnimDataPackedSize);
+        int n = (int)r.CheckCount(numAnims, "MotionData anims", AnimDataPackedSize, numAnimsAt);
         if (n != 0)
         {
             d.Anims = new AnimData[n];

@@ -27,11 +27,14 @@ internal enum BspKind
 /// </summary>
 /// <remarks>
 /// <para>Retail's static <c>BSPNODE::pack_poly</c> and <c>pack_tree_type</c> become the reader's own fields (no global state).</para>
-/// <para>Divergences (why): a tag that is none of retail's eight (<see cref="BspNodeType"/>) is a format error (retail reads such a
-/// node as a split node without children, which no real tree holds); a polygon index outside the owner's polygon list is a
-/// format error (retail would point past the list); a tree deeper than <see cref="MaxDepth"/> is a format error (retail recurses
-/// without bound; bad bytes must not overflow the stack). The stream form cannot express a cycle or a shared child (children
-/// are stored inline), so none can be read.</para>
+/// <para>A tag other than <c>PORT</c> and <c>LEAF</c> is a split node (<c>BSPNODE::UnPackChild</c>); <c>BSPNODE::UnPack</c>
+/// reads its plane, then only the children the six split tags name (any other tag, such as the <c>BPOL</c> and <c>BPFL</c> real
+/// drawing trees hold, has none), then what the tree kind stores for every split node. Such a node is kept with its tag and no
+/// children in a physics or cell tree (where the queries treat a missing child as an empty leaf).</para>
+/// <para>Divergences (why): a polygon index outside the owner's polygon list is a format error (retail would point past the
+/// list); a tree deeper than <see cref="MaxDepth"/> is a format error (retail recurses without bound; bad bytes must not
+/// overflow the stack). The stream form cannot express a cycle or a shared child (children are stored inline), so none can be
+/// read.</para>
 /// </remarks>
 internal sealed class BspReader
 {
@@ -91,22 +94,13 @@ internal sealed class BspReader
         }
 
         uint tag = r.ReadUInt32("BSP node type");
-        switch ((BspNodeType)tag)
+        return (BspNodeType)tag switch
         {
-            case BspNodeType.Portal:
-                return UnPackPortal(ref r, depth);
-            case BspNodeType.Leaf:
-                return UnPackLeaf(ref r);
-            case BspNodeType.SplitBothChildren:
-            case BspNodeType.SplitPositiveChild:
-            case BspNodeType.SplitNegativeChild:
-            case BspNodeType.SplitBothChildrenUnmarked:
-            case BspNodeType.SplitPositiveChildUnmarked:
-            case BspNodeType.SplitNegativeChildUnmarked:
-                return UnPack(ref r, (BspNodeType)tag, depth);
-            default:
-                throw r.ErrorAt(at, $"unknown BSP node type 0x{tag:X8}");
-        }
+            BspNodeType.Portal => UnPackPortal(ref r, depth),
+            BspNodeType.Leaf => UnPackLeaf(ref r),
+            // Every other tag, the six split tags and any other (BPOL, BPFL, ...), is a BSPNODE.
+            _ => UnPack(ref r, (BspNodeType)tag, depth),
+        };
     }
 
     private int Reserve()
@@ -116,7 +110,8 @@ internal sealed class BspReader
     }
 
     /// <summary>A split node: the plane, the children its tag stores (BPIN / BPnN both, BPIn / BPnn the positive one,
-    /// BpIN / BpnN the negative one), then the sphere (drawing and physics) and the polygon list (drawing).</summary>
+    /// BpIN / BpnN the negative one, any other tag none), then the sphere (drawing and physics) and the polygon count (u32)
+    /// and list (u16 each; drawing).</summary>
     // retail: BSPNODE::UnPack (acclient.c:363185)
     private int UnPack(ref RetailDataReader r, BspNodeType type, int depth)
     {
@@ -134,8 +129,12 @@ internal sealed class BspReader
             case BspNodeType.SplitPositiveChildUnmarked:
                 pos = UnPackChild(ref r, depth + 1);
                 break;
-            default:
+            case BspNodeType.SplitNegativeChild:
+            case BspNodeType.SplitNegativeChildUnmarked:
                 neg = UnPackChild(ref r, depth + 1);
+                break;
+            default:
+                // BSPNODE::UnPack's type test falls through to the sphere for any other tag: no child is read.
                 break;
         }
 
@@ -192,10 +191,11 @@ internal sealed class BspReader
         if (_kind == BspKind.Drawing)
         {
             sphere = Sphere.UnPack(ref r, "BSP portal sphere");
+            int numPolysAt = r.Offset;
             uint numPolys = r.ReadUInt32("BSP portal polygon count");
             uint numPortals = r.ReadUInt32("BSP portal portal count");
-            count = ReadPolyList(ref r, r.CheckCount(numPolys, "BSP portal polygon count", 2));
-            int portals = r.CheckCount(numPortals, "BSP portal portal count", 4);
+            count = ReadPolyList(ref r, r.CheckCount(numPolys, "BSP portal polygon count", 2, numPolysAt));
+            int portals = r.CheckCount(numPortals, "BSP portal portal count", 4, numPolysAt + 4);
             for (int i = 0; i < portals; i++)
             {
                 ReadPolyIndex(ref r);
