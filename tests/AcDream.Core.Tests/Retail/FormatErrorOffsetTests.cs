@@ -75,4 +75,19 @@ public class FormatErrorOffsetTests
         var e = Assert.Throws<RetailDataFormatException>(() => MovementParameters.UnPackNet(b, MovementType.TurnToHeading, out _));
         Assert.Equal(4, e.Offset);
     }
+    [Fact]
+    public void ANegativePhysicsSphereRadius_IsReportedAtTheRadius()
+    {
+        // GfxObj flags 1: id @0, flags @4, surface count @8 (0), vertex type @9, vertex count @13 (0), physics polygon count
+        // @17 (0); the tree @18 is one leaf: tag @18, index @22, solid @26, sphere centre @30, radius @42, polygon count @46;
+        // the sort centre @50. The root's sphere is the physics sphere (BSPTREE::GetSphere); its radius field is at 42.
+        var b = new byte[62];
+        BinaryPrimitives.WriteUInt32LittleEndian(b.AsSpan(4), 1);
+        b[9] = 1;
+        BinaryPrimitives.WriteUInt32LittleEndian(b.AsSpan(18), RetailEntries.Leaf);
+        BinaryPrimitives.WriteSingleLittleEndian(b.AsSpan(42), -1f);
+        var e = Assert.Throws<RetailDataFormatException>(() => GfxObjEntry.UnPack(b));
+        Assert.Contains("negative radius", e.Reason);
+        Assert.Equal(42, e.Offset);
+    }
 }

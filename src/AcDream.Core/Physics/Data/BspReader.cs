@@ -46,6 +46,7 @@ internal sealed class BspReader
     private readonly List<BspNode> _nodes;
     private readonly List<int> _polyIndices;
     private int _leaves;
+    private int _rootSphereAt = -1;
 
     private BspReader(BspKind kind, int numPolys)
     {
@@ -62,11 +63,17 @@ internal sealed class BspReader
     /// against <paramref name="numPolys"/>.
     /// </summary>
     // retail: BSPTREE::UnPack (acclient.c:360685)
-    public static BspTree? UnPackTree(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys)
+    public static BspTree? UnPackTree(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys) =>
+        UnPackTree(ref r, kind, polygons, numPolys, out _);
+
+    /// <summary><see cref="UnPackTree(ref RetailDataReader, BspKind, Polygon[], int)"/>, also giving the offset of the root's
+    /// sphere (-1 when the root stores none), so that a check of <c>BSPTREE::GetSphere</c> can name that field.</summary>
+    public static BspTree? UnPackTree(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys, out int rootSphereAt)
     {
         int at = r.Offset;
         var bsp = new BspReader(kind, numPolys);
         int root = bsp.UnPackChild(ref r, 1);
+        rootSphereAt = bsp._rootSphereAt;
         if (kind == BspKind.Drawing)
         {
             return null;
@@ -142,6 +149,11 @@ internal sealed class BspReader
         int first = _polyIndices.Count, count = 0;
         if (_kind != BspKind.Cell)
         {
+            if (index == 0)
+            {
+                _rootSphereAt = r.Offset;
+            }
+
             sphere = Sphere.UnPack(ref r, "BSP node sphere");
             if (_kind == BspKind.Drawing)
             {
@@ -168,6 +180,11 @@ internal sealed class BspReader
         if (_kind == BspKind.Physics)
         {
             solid = r.ReadUInt32("BSP leaf solid") != 0;
+            if (index == 0)
+            {
+                _rootSphereAt = r.Offset;
+            }
+
             sphere = Sphere.UnPack(ref r, "BSP leaf sphere");
             count = ReadPolyList(ref r, r.ReadCount("BSP leaf polygon count", 2));
         }
@@ -190,6 +207,11 @@ internal sealed class BspReader
         int first = _polyIndices.Count, count = 0;
         if (_kind == BspKind.Drawing)
         {
+            if (index == 0)
+            {
+                _rootSphereAt = r.Offset;
+            }
+
             sphere = Sphere.UnPack(ref r, "BSP portal sphere");
             int numPolysAt = r.Offset;
             uint numPolys = r.ReadUInt32("BSP portal polygon count");

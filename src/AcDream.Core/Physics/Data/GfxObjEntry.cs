@@ -118,11 +118,11 @@ public sealed class GfxObjEntry
             int n = r.ReadCompressedCount("physics polygon count", 12);
             PolygonInfo[] raw = SerializePolygons(ref r, n, vertices.Length, nAt);
             physicsPolys = PolygonInfo.ToPolygons(raw, vertices, "CGfxObj");
-            int bspAt = r.Offset;
-            physicsBsp = SerializeBsp(ref r, BspKind.Physics, physicsPolys, physicsPolys.Length)!;
+            physicsBsp = SerializeBsp(ref r, BspKind.Physics, physicsPolys, physicsPolys.Length, out int sphereAt)!;
             if (physicsBsp.Sphere.Radius < 0f)
             {
-                throw r.ErrorAt(bspAt, "the physics sphere has a negative radius");
+                // The radius field of the root's sphere (centre 12 bytes, then the radius).
+                throw r.ErrorAt(sphereAt + 12, "the physics sphere has a negative radius");
             }
         }
 
@@ -135,7 +135,7 @@ public sealed class GfxObjEntry
             int drawingAt = r.Offset;
             drawingCount = r.ReadCompressedCount("drawing polygon count", 12);
             SerializePolygons(ref r, drawingCount, vertices.Length, drawingAt);
-            SerializeBsp(ref r, BspKind.Drawing, [], drawingCount);
+            SerializeBsp(ref r, BspKind.Drawing, [], drawingCount, out _);
         }
 
         r.Structure = "CGfxObj";
@@ -166,10 +166,10 @@ public sealed class GfxObjEntry
 
     // A BSP tree through its own unpack.
     // retail: SB_AsPackObj<0>::Serialize (acclient.c:356306), the BSPTREE instance
-    private static BspTree? SerializeBsp(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys)
+    private static BspTree? SerializeBsp(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys, out int rootSphereAt)
     {
         r.Structure = "BSPTREE";
-        return BspReader.UnPackTree(ref r, kind, polygons, numPolys);
+        return BspReader.UnPackTree(ref r, kind, polygons, numPolys, out rootSphereAt);
     }
 
     // The sort centre: 12 bytes, x, y, z.
