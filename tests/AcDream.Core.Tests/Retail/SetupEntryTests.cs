@@ -53,7 +53,7 @@ public class SetupEntryTests
         w.Vector3(new Vector3(0f, 0f, 0.95f)).Single(1.1f);                                      // selection sphere
         w.UInt32(1).UInt32(3).Frame(new Vector3(0f, 0f, 2f), Quaternion.Identity).UInt32(0xFFFFCC00).Single(0.5f).Single(4f).Single(1f);
         w.UInt32(0x03000001).UInt32(0x33000002).UInt32(0x09000001).UInt32(0x20000003).UInt32(0x34000004);
-        return w.Align4().ToArray();
+        return w.Align4().ToArray();   // CSetup::UnPack (acclient.c:335520) rounds its cursor up to 4 at its end, always
     }
 
     [Fact]
