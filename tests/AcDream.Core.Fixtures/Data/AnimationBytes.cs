@@ -61,7 +61,7 @@ internal sealed class AnimationBytes
         {
             w.UInt32((uint)type).Int32((int)direction);
             fields?.Invoke(w);
-            w.Align4();
+            w.Align4();   // CAnimHook::UnPackHook (acclient.c:342736) ends with PackObj::ALIGN_PTR, always
         });
         return this;
     }

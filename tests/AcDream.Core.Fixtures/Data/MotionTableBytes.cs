@@ -134,6 +134,7 @@ public sealed class MotionTableBytes
             physics |= 2;
         }
 
+        // MotionData::UnPack (acclient.c:341813) rounds its cursor up to 4 after the three bytes, always.
         w.UInt32(id).Byte((byte)d.Anims.Length).Byte(d.Bitfield).Byte(physics).Align4();
         foreach ((uint animId, int low, int high, float framerate) in d.Anims)
         {

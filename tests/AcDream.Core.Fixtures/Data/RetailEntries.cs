@@ -29,6 +29,9 @@ internal static class RetailEntries
     public const uint Leaf = 0x4C454146, Port = 0x504F5254, BPIN = 0x4250494E, BPIn = 0x4250496E, BpIN = 0x4270494E,
         BPnN = 0x42506E4E, BPnn = 0x42506E6E, BpnN = 0x42706E4E;
 
+    /// <summary>Tags real drawing trees hold besides the eight: 'BPOL' and 'BPFL' (read as split nodes without children).</summary>
+    public const uint BPOL = 0x42504F4C, BPFL = 0x4250464C;
+
     /// <summary>The vertex array: type 1, count, then each vertex (id, uv count, position, normal (0, 0, 1), uvs).</summary>
     public static void Vertices(RetailDataWriter w, IReadOnlyList<Vector3> v, int uvsEach = 0)
     {
@@ -146,8 +149,12 @@ internal static class RetailEntries
             case BspNodeType.SplitPositiveChildUnmarked:
                 Child(w, tree, n.PosNode, kind);
                 break;
-            default:
+            case BspNodeType.SplitNegativeChild:
+            case BspNodeType.SplitNegativeChildUnmarked:
                 Child(w, tree, n.NegNode, kind);
+                break;
+            default:
+                // Any other tag (BPOL, BPFL, ...): BSPNODE::UnPack (acclient.c:363185) reads no child for it.
                 break;
         }
 
@@ -180,6 +187,10 @@ internal static class RetailEntries
 
     /// <summary>A GfxObj entry (<c>CGfxObj::Serialize</c> order). The physics part is written when <paramref name="physicsBsp"/>
     /// is given; the drawing part when <paramref name="drawing"/> is.</summary>
+    /// <remarks>No padding anywhere: <c>CGfxObj::Serialize</c> (acclient.c:356682) and <c>SB_AsDataID&lt;0&gt;::Serialize</c>
+    /// (356648) call <c>Archive::CheckAlignment</c> before the flags, each surface id and the degrade id, but it pads only
+    /// on a word-aligned archive (flag 2, acclient.c:70280), which a data-file archive never is (its flags start at 0:
+    /// <c>AsyncCache::SerializeFromCachePack</c> 84376; only <c>Archive::SetWordAligned</c> 70048 sets flag 2).</remarks>
     public static byte[] GfxObj(uint id, IReadOnlyList<Vector3> verts, IReadOnlyList<PolyDef> physics, BspTree? physicsBsp, Vector3 sortCenter,
         IReadOnlyList<PolyDef>? drawing = null, uint? degrade = null, uint[]? surfaces = null)
     {
@@ -190,7 +201,7 @@ internal static class RetailEntries
         Compressed(w, (uint)surfaces.Length);
         foreach (uint s in surfaces)
         {
-            w.Align4().UInt32(s);
+            w.UInt32(s);   // directly after the compressed count (1, 2 or 4 bytes): no CheckAlignment padding
         }
 
         Vertices(w, verts);
@@ -219,7 +230,7 @@ internal static class RetailEntries
 
         if (degrade is uint d)
         {
-            w.Align4().UInt32(d);
+            w.UInt32(d);   // directly after the drawing tree or the sort centre: no CheckAlignment padding
         }
 
         return w.ToArray();
@@ -258,7 +269,7 @@ internal static class RetailEntries
             w.UInt16(p);
         }
 
-        w.Align4();
+        w.Align4();   // CCellStruct::UnPack (acclient.c:355822) rounds its cursor up to 4 after the portal list, always
         Tree(w, cellBsp, 2);
         foreach (PolyDef p in physics)
         {
@@ -272,7 +283,7 @@ internal static class RetailEntries
             DrawingLeaf(w);
         }
 
-        w.Align4();
+        w.Align4();   // CCellStruct::UnPack (acclient.c:355822) rounds its cursor up to 4 at its end, always
     }
 
     /// <summary>An environment entry: id, structure count, the structures (each written by a callback).</summary>
@@ -346,7 +357,7 @@ internal static class RetailEntries
             w.Byte(h);
         }
 
-        return w.Align4().ToArray();
+        return w.Align4().ToArray();   // CLandBlockStruct::UnPack (acclient.c:354108): 4-alignment after the 81 heights, always
     }
 
     /// <summary>A landblock info entry (<c>CLandBlockInfo::UnPack</c> order).</summary>
@@ -374,7 +385,7 @@ internal static class RetailEntries
 
                 if ((d.Stabs.Length & 1) != 0)
                 {
-                    w.UInt16(0);
+                    w.UInt16(0);   // CBldPortal::UnPack (acclient.c:362498) skips 2 bytes after an odd number of stabs, always
                 }
             }
         }

@@ -46,7 +46,7 @@ public class GfxObjEntryTests
         uint flags = 1u | (drawing ? 2u : 0u) | (degrade is null ? 0u : 8u);
         w.UInt32(0x01000AAA).UInt32(flags);
         RetailEntries.Compressed(w, 2);
-        w.Align4().UInt32(0x08000001).Align4().UInt32(0x08000002);
+        w.UInt32(0x08000001).UInt32(0x08000002);   // at 9 and 13: no padding (CheckAlignment is off on a data-file archive)
         RetailEntries.Vertices(w, Verts, uvsEach: 1);
         RetailEntries.Compressed(w, 2);
         RetailEntries.Polygon(w, Floor);
@@ -68,7 +68,7 @@ public class GfxObjEntryTests
 
         if (degrade is uint d)
         {
-            w.Align4().UInt32(d);
+            w.UInt32(d);   // directly after the drawing tree or the sort centre
         }
 
         return w.ToArray();
@@ -202,16 +202,23 @@ public class GfxObjEntryTests
     }
 
     [Fact]
-    public void AnUnknownNodeTag_IsAFormatError_AtTheTag()
+    public void AnUnknownNodeTagInThePhysicsTree_IsASplitNodeWithoutChildren_PlaneThenSphere()
     {
-        byte[] good = Entry(drawing: false, degrade: null);
-        int treeAt = good.Length - PhysicsTree().Length - 12;
-        byte[] bad = (byte[])good.Clone();
-        BitConverter.TryWriteBytes(bad.AsSpan(treeAt), 0x12345678u);
-        var e = Assert.Throws<RetailDataFormatException>(() => GfxObjEntry.UnPack(bad));
-        Assert.Equal("BSPTREE", e.Structure);
-        Assert.Equal(treeAt, e.Offset);
-        Assert.Contains("0x12345678", e.Reason);
+        // BSPNODE::UnPackChild (acclient.c:363343) makes a BSPNODE of any tag but PORT and LEAF; BSPNODE::UnPack (363185)
+        // reads its plane, no child (the tag is none of the six split tags), then in a physics tree the sphere only.
+        var w = new RetailDataWriter();
+        w.UInt32(0x12345678u).Vector3(Vector3.UnitX).Single(-0.5f);    // tag, plane
+        w.Vector3(new Vector3(0.5f, 0.5f, 0.5f)).Single(0.9f);          // sphere; no polygon list in a physics tree
+        GfxObjEntry g = GfxObjEntry.UnPack(Entry(drawing: false, tree: w.ToArray()));
+        BspTree t = g.PhysicsBsp!;
+        // The sort centre and the degrade id after the tree read back: the node took exactly 4 + 16 + 16 bytes.
+        Assert.Equal(new Vector3(0.5f, 0.5f, 0.25f), g.SortCenter);
+        Assert.Equal(0x11000001u, g.DegradeId);
+        Assert.Equal(1, t.Nodes.Length);
+        Assert.Equal(0x12345678u, (uint)t.Nodes[0].Type);
+        Assert.Equal((-1, -1), (t.Nodes[0].PosNode, t.Nodes[0].NegNode));
+        Assert.Equal(0.9f, t.Nodes[0].Sphere.Radius);
+        Assert.Equal(-0.5f, t.Nodes[0].SplittingPlane.D);
     }
 
     [Fact]

@@ -116,6 +116,6 @@ public class LandBlockEntryTests
         Assert.Equal("CLandBlockInfo", e.Structure);
         Assert.Contains("object count", e.Reason);
         Assert.Contains("1000", e.Reason);
-        Assert.Equal(12, e.Offset);
+        Assert.Equal(8, e.Offset);   // the count's own field (id @0, cell count @4, object count @8), not the byte after it
     }
 }

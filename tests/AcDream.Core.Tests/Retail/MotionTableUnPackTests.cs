@@ -105,7 +105,7 @@ public class MotionTableUnPackTests
         byte[] bytes = Sample();
         BitConverter.TryWriteBytes(bytes.AsSpan(8, 4), 0x7FFFFFFFu); // the style-default count
         var ex = Assert.Throws<RetailDataFormatException>(() => MotionTable.UnPack(bytes));
-        Assert.Equal(12, ex.Offset); // the error names the byte after the count (ReadCount checks what it has read)
+        Assert.Equal(8, ex.Offset); // the error names the count's own field (@8), not the byte after it
     }
 
     [Fact]

@@ -53,7 +53,7 @@ public class SetupEntryTests
         w.Vector3(new Vector3(0f, 0f, 0.95f)).Single(1.1f);                                      // selection sphere
         w.UInt32(1).UInt32(3).Frame(new Vector3(0f, 0f, 2f), Quaternion.Identity).UInt32(0xFFFFCC00).Single(0.5f).Single(4f).Single(1f);
         w.UInt32(0x03000001).UInt32(0x33000002).UInt32(0x09000001).UInt32(0x20000003).UInt32(0x34000004);
-        return w.Align4().ToArray();
+        return w.Align4().ToArray();   // CSetup::UnPack (acclient.c:335520) rounds its cursor up to 4 at its end, always
     }
 
     [Fact]
@@ -196,7 +196,7 @@ public class SetupEntryTests
         var w = new RetailDataWriter();
         w.UInt32(0x02000001).UInt32(0).UInt32(0x40000000);
         var e = Assert.Throws<RetailDataFormatException>(() => SetupEntry.UnPack(w.ToArray()));
-        Assert.Equal(12, e.Offset); // the check runs after the count is read: 0 bytes remain for 2^30 parts
+        Assert.Equal(8, e.Offset); // the part count's own field (id @0, flags @4, count @8): 0 bytes remain for 2^30 parts
         Assert.Contains("part count", e.Reason);
     }
 

@@ -104,7 +104,7 @@ public sealed class AnimClip
         AnimFrame[] partFrames = numFrames == 0 ? Array.Empty<AnimFrame>() : new AnimFrame[numFrames];
         for (int i = 0; i < numFrames; i++)
         {
-            partFrames[i] = AnimFrame.UnPack(ref reader, numParts);
+            partFrames[i] = AnimFrame.UnPack(ref reader, numParts, countAt - 4);
         }
 
         return new AnimClip(id, numParts, posFrames, partFrames, hasHooks);

@@ -37,10 +37,10 @@ public sealed class AnimFrame
     /// </summary>
     /// <exception cref="RetailDataFormatException">Truncated, a count larger than the bytes left, or a bad frame or hook.</exception>
     // retail: AnimFrame::UnPack (acclient.c:333869)
-    internal static AnimFrame UnPack(ref RetailDataReader reader, int numParts)
+    internal static AnimFrame UnPack(ref RetailDataReader reader, int numParts, int numPartsAt)
     {
         // Each part frame is 28 bytes: checked before the array is sized by the count.
-        reader.CheckCount((uint)numParts, "AnimFrame part frames", 28);
+        reader.CheckCount((uint)numParts, "AnimFrame part frames", 28, numPartsAt);
         AFrame[] frames = numParts == 0 ? Array.Empty<AFrame>() : new AFrame[numParts];
         for (int i = 0; i < numParts; i++)
         {

@@ -48,21 +48,21 @@ internal sealed class MotionData
     {
         var d = new MotionData();
         d.Id = r.ReadUInt32("MotionData id");
-        int countAt = r.Offset;
+        int numAnimsAt = r.Offset;
         byte numAnims = r.ReadByte("MotionData num_anims");
         // non-retail: num_anims is a signed char; retail sizes the array by the byte (unsigned) but runs its read loop
         // (`v14 < num_anims`, unsigned against the sign-extended count) and GetObjectSequence's sums on the signed value, so a
         // count of 128..255 reads past the array: refused (docs/divergences.md)
         if (numAnims > sbyte.MaxValue)
         {
-            throw r.ErrorAt(countAt, $"MotionData num_anims {numAnims} is above 127 (a signed char in retail)");
+            throw r.ErrorAt(numAnimsAt, $"MotionData num_anims {numAnims} is above 127 (a signed char in retail)");
         }
 
         d.Bitfield = r.ReadByte("MotionData bitfield");
         byte physics = r.ReadByte("MotionData physics flags");
         r.Align4();
         // An AnimData is 16 bytes (AnimData::UnPack reads four dwords), so the count is checked before the array is made.
-        int n = (int)r.CheckCount(numAnims, "MotionData anims", AnimDataPackedSize);
+        int n = (int)r.CheckCount(numAnims, "MotionData anims", AnimDataPackedSize, numAnimsAt);
         if (n != 0)
         {
             d.Anims = new AnimData[n];

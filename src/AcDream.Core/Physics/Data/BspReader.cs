@@ -27,11 +27,14 @@ internal enum BspKind
 /// </summary>
 /// <remarks>
 /// <para>Retail's static <c>BSPNODE::pack_poly</c> and <c>pack_tree_type</c> become the reader's own fields (no global state).</para>
-/// <para>Divergences (why): a tag that is none of retail's eight (<see cref="BspNodeType"/>) is a format error (retail reads such a
-/// node as a split node without children, which no real tree holds); a polygon index outside the owner's polygon list is a
-/// format error (retail would point past the list); a tree deeper than <see cref="MaxDepth"/> is a format error (retail recurses
-/// without bound; bad bytes must not overflow the stack). The stream form cannot express a cycle or a shared child (children
-/// are stored inline), so none can be read.</para>
+/// <para>A tag other than <c>PORT</c> and <c>LEAF</c> is a split node (<c>BSPNODE::UnPackChild</c>); <c>BSPNODE::UnPack</c>
+/// reads its plane, then only the children the six split tags name (any other tag, such as the <c>BPOL</c> and <c>BPFL</c> real
+/// drawing trees hold, has none), then what the tree kind stores for every split node. Such a node is kept with its tag and no
+/// children in a physics or cell tree (where the queries treat a missing child as an empty leaf).</para>
+/// <para>Divergences (why): a polygon index outside the owner's polygon list is a format error (retail would point past the
+/// list); a tree deeper than <see cref="MaxDepth"/> is a format error (retail recurses without bound; bad bytes must not
+/// overflow the stack). The stream form cannot express a cycle or a shared child (children are stored inline), so none can be
+/// read.</para>
 /// </remarks>
 internal sealed class BspReader
 {
@@ -43,6 +46,7 @@ internal sealed class BspReader
     private readonly List<BspNode> _nodes;
     private readonly List<int> _polyIndices;
     private int _leaves;
+    private int _rootSphereAt = -1;
 
     private BspReader(BspKind kind, int numPolys)
     {
@@ -59,11 +63,17 @@ internal sealed class BspReader
     /// against <paramref name="numPolys"/>.
     /// </summary>
     // retail: BSPTREE::UnPack (acclient.c:360685)
-    public static BspTree? UnPackTree(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys)
+    public static BspTree? UnPackTree(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys) =>
+        UnPackTree(ref r, kind, polygons, numPolys, out _);
+
+    /// <summary><see cref="UnPackTree(ref RetailDataReader, BspKind, Polygon[], int)"/>, also giving the offset of the root's
+    /// sphere (-1 when the root stores none), so that a check of <c>BSPTREE::GetSphere</c> can name that field.</summary>
+    public static BspTree? UnPackTree(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys, out int rootSphereAt)
     {
         int at = r.Offset;
         var bsp = new BspReader(kind, numPolys);
         int root = bsp.UnPackChild(ref r, 1);
+        rootSphereAt = bsp._rootSphereAt;
         if (kind == BspKind.Drawing)
         {
             return null;
@@ -91,22 +101,13 @@ internal sealed class BspReader
         }
 
         uint tag = r.ReadUInt32("BSP node type");
-        switch ((BspNodeType)tag)
+        return (BspNodeType)tag switch
         {
-            case BspNodeType.Portal:
-                return UnPackPortal(ref r, depth);
-            case BspNodeType.Leaf:
-                return UnPackLeaf(ref r);
-            case BspNodeType.SplitBothChildren:
-            case BspNodeType.SplitPositiveChild:
-            case BspNodeType.SplitNegativeChild:
-            case BspNodeType.SplitBothChildrenUnmarked:
-            case BspNodeType.SplitPositiveChildUnmarked:
-            case BspNodeType.SplitNegativeChildUnmarked:
-                return UnPack(ref r, (BspNodeType)tag, depth);
-            default:
-                throw r.ErrorAt(at, $"unknown BSP node type 0x{tag:X8}");
-        }
+            BspNodeType.Portal => UnPackPortal(ref r, depth),
+            BspNodeType.Leaf => UnPackLeaf(ref r),
+            // Every other tag, the six split tags and any other (BPOL, BPFL, ...), is a BSPNODE.
+            _ => UnPack(ref r, (BspNodeType)tag, depth),
+        };
     }
 
     private int Reserve()
@@ -116,7 +117,8 @@ internal sealed class BspReader
     }
 
     /// <summary>A split node: the plane, the children its tag stores (BPIN / BPnN both, BPIn / BPnn the positive one,
-    /// BpIN / BpnN the negative one), then the sphere (drawing and physics) and the polygon list (drawing).</summary>
+    /// BpIN / BpnN the negative one, any other tag none), then the sphere (drawing and physics) and the polygon count (u32)
+    /// and list (u16 each; drawing).</summary>
     // retail: BSPNODE::UnPack (acclient.c:363185)
     private int UnPack(ref RetailDataReader r, BspNodeType type, int depth)
     {
@@ -134,8 +136,12 @@ internal sealed class BspReader
             case BspNodeType.SplitPositiveChildUnmarked:
                 pos = UnPackChild(ref r, depth + 1);
                 break;
-            default:
+            case BspNodeType.SplitNegativeChild:
+            case BspNodeType.SplitNegativeChildUnmarked:
                 neg = UnPackChild(ref r, depth + 1);
+                break;
+            default:
+                // BSPNODE::UnPack's type test falls through to the sphere for any other tag: no child is read.
                 break;
         }
 
@@ -143,6 +149,11 @@ internal sealed class BspReader
         int first = _polyIndices.Count, count = 0;
         if (_kind != BspKind.Cell)
         {
+            if (index == 0)
+            {
+                _rootSphereAt = r.Offset;
+            }
+
             sphere = Sphere.UnPack(ref r, "BSP node sphere");
             if (_kind == BspKind.Drawing)
             {
@@ -169,6 +180,11 @@ internal sealed class BspReader
         if (_kind == BspKind.Physics)
         {
             solid = r.ReadUInt32("BSP leaf solid") != 0;
+            if (index == 0)
+            {
+                _rootSphereAt = r.Offset;
+            }
+
             sphere = Sphere.UnPack(ref r, "BSP leaf sphere");
             count = ReadPolyList(ref r, r.ReadCount("BSP leaf polygon count", 2));
         }
@@ -191,11 +207,17 @@ internal sealed class BspReader
         int first = _polyIndices.Count, count = 0;
         if (_kind == BspKind.Drawing)
         {
+            if (index == 0)
+            {
+                _rootSphereAt = r.Offset;
+            }
+
             sphere = Sphere.UnPack(ref r, "BSP portal sphere");
+            int numPolysAt = r.Offset;
             uint numPolys = r.ReadUInt32("BSP portal polygon count");
             uint numPortals = r.ReadUInt32("BSP portal portal count");
-            count = ReadPolyList(ref r, r.CheckCount(numPolys, "BSP portal polygon count", 2));
-            int portals = r.CheckCount(numPortals, "BSP portal portal count", 4);
+            count = ReadPolyList(ref r, r.CheckCount(numPolys, "BSP portal polygon count", 2, numPolysAt));
+            int portals = r.CheckCount(numPortals, "BSP portal portal count", 4, numPolysAt + 4);
             for (int i = 0; i < portals; i++)
             {
                 ReadPolyIndex(ref r);

@@ -69,16 +69,17 @@ public sealed class CellStructEntry
     {
         r.Structure = "CCellStruct";
         uint id = r.ReadUInt32("cell struct id");
+        int countsAt = r.Offset;
         uint numPolygons = r.ReadUInt32("polygon count");
         uint numPhysics = r.ReadUInt32("physics polygon count");
         int numPortals = r.ReadCount("portal count", 2);
         r.Structure = "CVertexArray";
         Vector3[] vertices = VertexArrayReader.UnPack(ref r);
         r.Structure = "CPolygon";
-        int nPolys = r.CheckCount(numPolygons, "polygon count", 12);
-        PolygonInfo[] polygons = PolygonInfo.UnPackList(ref r, nPolys, vertices.Length);
+        int nPolys = r.CheckCount(numPolygons, "polygon count", 12, countsAt);
+        PolygonInfo[] polygons = PolygonInfo.UnPackList(ref r, nPolys, vertices.Length, countsAt);
         r.Structure = "CCellStruct";
-        r.CheckCount((uint)numPortals, "portal count", 2);
+        r.CheckCount((uint)numPortals, "portal count", 2, countsAt + 8);
         var portals = new Polygon[numPortals];
         for (int i = 0; i < numPortals; i++)
         {
@@ -96,8 +97,8 @@ public sealed class CellStructEntry
         r.Structure = "BSPTREE";
         BspTree cellBsp = BspReader.UnPackTree(ref r, BspKind.Cell, [], polygons.Length)!;
         r.Structure = "CPolygon";
-        int nPhysics = r.CheckCount(numPhysics, "physics polygon count", 12);
-        Polygon[] physics = PolygonInfo.ToPolygons(PolygonInfo.UnPackList(ref r, nPhysics, vertices.Length), vertices, "CCellStruct");
+        int nPhysics = r.CheckCount(numPhysics, "physics polygon count", 12, countsAt + 4);
+        Polygon[] physics = PolygonInfo.ToPolygons(PolygonInfo.UnPackList(ref r, nPhysics, vertices.Length, countsAt + 4), vertices, "CCellStruct");
         r.Structure = "BSPTREE";
         BspTree physicsBsp = BspReader.UnPackTree(ref r, BspKind.Physics, physics, physics.Length)!;
         r.Structure = "CCellStruct";

@@ -120,10 +120,11 @@ public sealed class EnvCellEntry
         }
 
         uint blockMask = id & 0xFFFF0000;
+        int countsAt = r.Offset;
         byte numSurfaces = r.ReadByte("surface count");
         byte numPortals = r.ReadByte("portal count");
         ushort numStabs = r.ReadUInt16("visible cell count");
-        r.CheckCount(numSurfaces, "surface count", 2);
+        r.CheckCount(numSurfaces, "surface count", 2, countsAt);
         var surfaces = new uint[numSurfaces];
         for (int i = 0; i < surfaces.Length; i++)
         {
@@ -134,7 +135,7 @@ public sealed class EnvCellEntry
         uint environmentId = r.ReadUInt16("environment id") | 0x0D000000u;
         int structIndex = r.ReadUInt16("cell struct index");
         Frame frame = r.ReadFrame("cell frame");
-        r.CheckCount(numPortals, "portal count", 8);
+        r.CheckCount(numPortals, "portal count", 8, countsAt + 1);
         var portals = new CellPortalInfo[numPortals];
         var portalAt = new int[numPortals];
         for (int i = 0; i < portals.Length; i++)
@@ -143,7 +144,7 @@ public sealed class EnvCellEntry
             portals[i] = UnPackPortal(ref r, blockMask);
         }
 
-        r.CheckCount(numStabs, "visible cell count", 2);
+        r.CheckCount(numStabs, "visible cell count", 2, countsAt + 2);
         var visible = new uint[numStabs];
         for (int i = 0; i < visible.Length; i++)
         {

@@ -76,10 +76,18 @@ public sealed class GfxObjEntry
     public GfxObjPhysics? Physics { get; }
 
     /// <summary>
-    /// Unpacks one GfxObj entry's bytes (after the data-file container): the id, the flags (4-aligned), the surface count
-    /// (compressed) and ids, the vertex array, the physics polygons and BSP (flag 1), the sort centre, the drawing polygons
-    /// and BSP (flag 2), the degrade id (flag 8). Retail <c>CGfxObj::Serialize</c>.
+    /// Unpacks one GfxObj entry's bytes (after the data-file container): the id (u32 at 0), the flags (u32 at 4), the surface
+    /// count (compressed: 1, 2 or 4 bytes, at 8) and the surface ids (u32 each, directly after it), the vertex array, the
+    /// physics polygons and BSP (flag 1), the sort centre, the drawing polygons and BSP (flag 2), the degrade id (flag 8: u32,
+    /// directly after whatever precedes it). No padding anywhere. Retail <c>CGfxObj::Serialize</c>.
     /// </summary>
+    /// <remarks>
+    /// Retail calls <c>Archive::CheckAlignment</c> before the flags, each surface id and the degrade id, but
+    /// <c>CheckAlignment</c> (acclient.c:70280) pads only when the archive's word-aligned flag (2) is set, and every archive
+    /// that unpacks a data-file object starts with its flags 0 (<c>AsyncCache::SerializeFromCachePack</c> acclient.c:84376,
+    /// <c>TransientArchive::TransientArchive</c> 290180; <c>Archive::InitForUnpacking</c> 70527 leaves flag 2 alone) and
+    /// only <c>Archive::SetWordAligned</c> (70048) sets it, which no data-file load calls: no padding is read.
+    /// </remarks>
     /// <exception cref="RetailDataFormatException">The bytes are not a GfxObj (truncated, inconsistent, or not finite).</exception>
     // retail: CGfxObj::Serialize (acclient.c:356682)
     public static GfxObjEntry UnPack(ReadOnlySpan<byte> data)
@@ -91,9 +99,9 @@ public sealed class GfxObjEntry
     internal static GfxObjEntry UnPack(ref RetailDataReader r)
     {
         uint id = r.ReadUInt32("id");
-        r.Align4();
+        // Archive::CheckAlignment(4) here and before each surface id and the degrade id: a no-op (word-aligned flag clear).
         uint flags = r.ReadUInt32("flags");
-        int numSurfaces = r.CheckCount(r.ReadCompressedUInt32("surface count"), "surface count", 4);
+        int numSurfaces = r.ReadCompressedCount("surface count", 4);
         var surfaces = new uint[numSurfaces];
         for (int i = 0; i < surfaces.Length; i++)
         {
@@ -106,14 +114,15 @@ public sealed class GfxObjEntry
         if ((flags & HasPhysicsFlag) != 0)
         {
             r.Structure = "CPolygon";
-            int n = r.CheckCount(r.ReadCompressedUInt32("physics polygon count"), "physics polygon count", 12);
-            PolygonInfo[] raw = SerializePolygons(ref r, n, vertices.Length);
+            int nAt = r.Offset;
+            int n = r.ReadCompressedCount("physics polygon count", 12);
+            PolygonInfo[] raw = SerializePolygons(ref r, n, vertices.Length, nAt);
             physicsPolys = PolygonInfo.ToPolygons(raw, vertices, "CGfxObj");
-            int bspAt = r.Offset;
-            physicsBsp = SerializeBsp(ref r, BspKind.Physics, physicsPolys, physicsPolys.Length)!;
+            physicsBsp = SerializeBsp(ref r, BspKind.Physics, physicsPolys, physicsPolys.Length, out int sphereAt)!;
             if (physicsBsp.Sphere.Radius < 0f)
             {
-                throw r.ErrorAt(bspAt, "the physics sphere has a negative radius");
+                // The radius field of the root's sphere (centre 12 bytes, then the radius).
+                throw r.ErrorAt(sphereAt + 12, "the physics sphere has a negative radius");
             }
         }
 
@@ -123,16 +132,16 @@ public sealed class GfxObjEntry
         if ((flags & HasDrawingFlag) != 0)
         {
             r.Structure = "CPolygon";
-            drawingCount = r.CheckCount(r.ReadCompressedUInt32("drawing polygon count"), "drawing polygon count", 12);
-            SerializePolygons(ref r, drawingCount, vertices.Length);
-            SerializeBsp(ref r, BspKind.Drawing, [], drawingCount);
+            int drawingAt = r.Offset;
+            drawingCount = r.ReadCompressedCount("drawing polygon count", 12);
+            SerializePolygons(ref r, drawingCount, vertices.Length, drawingAt);
+            SerializeBsp(ref r, BspKind.Drawing, [], drawingCount, out _);
         }
 
         r.Structure = "CGfxObj";
         uint degrade = 0;
         if ((flags & HasDegradeFlag) != 0)
         {
-            r.Align4();
             degrade = r.ReadUInt32("degrade id");
         }
 
@@ -149,18 +158,18 @@ public sealed class GfxObjEntry
 
     // Each polygon through its own unpack.
     // retail: SB_AsPackObj<0>::Serialize (acclient.c:356272), the CPolygon instance
-    private static PolygonInfo[] SerializePolygons(ref RetailDataReader r, int count, int numVertices)
+    private static PolygonInfo[] SerializePolygons(ref RetailDataReader r, int count, int numVertices, int countAt)
     {
         r.Structure = "CPolygon";
-        return PolygonInfo.UnPackList(ref r, count, numVertices);
+        return PolygonInfo.UnPackList(ref r, count, numVertices, countAt);
     }
 
     // A BSP tree through its own unpack.
     // retail: SB_AsPackObj<0>::Serialize (acclient.c:356306), the BSPTREE instance
-    private static BspTree? SerializeBsp(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys)
+    private static BspTree? SerializeBsp(ref RetailDataReader r, BspKind kind, Polygon[] polygons, int numPolys, out int rootSphereAt)
     {
         r.Structure = "BSPTREE";
-        return BspReader.UnPackTree(ref r, kind, polygons, numPolys);
+        return BspReader.UnPackTree(ref r, kind, polygons, numPolys, out rootSphereAt);
     }
 
     // The sort centre: 12 bytes, x, y, z.
@@ -171,11 +180,10 @@ public sealed class GfxObjEntry
         return r.ReadFiniteVector3("sort center");
     }
 
-    // A surface id: 4-aligned, 4 bytes.
+    // A surface id: 4 bytes, unpadded (CheckAlignment is a no-op on a data-file archive, see UnPack).
     // retail: SB_AsDataID<0>::Serialize (acclient.c:356648)
     private static uint ReadDataId(ref RetailDataReader r)
     {
-        r.Align4();
         return r.ReadUInt32("surface id");
     }
 }

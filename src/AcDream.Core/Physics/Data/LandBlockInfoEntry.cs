@@ -111,8 +111,9 @@ public sealed class LandBlockInfoEntry
         }
 
         uint blockMask = id & 0xFFFF0000u;
+        int packedAt = r.Offset;
         uint packed = r.ReadUInt32("building count");
-        int numBuildings = r.CheckCount(packed & 0xFFFF, "building count", 40);
+        int numBuildings = r.CheckCount(packed & 0xFFFF, "building count", 40, packedAt);
         ushort packMask = (ushort)(packed >> 16);
         var buildings = new BuildingInfo[numBuildings];
         for (int i = 0; i < numBuildings; i++)
@@ -172,7 +173,7 @@ public sealed class LandBlockInfoEntry
             throw r.ErrorAt(at, $"{count} entries in a table of size 0");
         }
 
-        r.CheckCount((uint)count, "table entry count", 8);
+        r.CheckCount((uint)count, "table entry count", 8, at);
         var table = new Dictionary<uint, uint>(count);
         for (int i = 0; i < count; i++)
         {

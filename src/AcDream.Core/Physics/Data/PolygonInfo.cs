@@ -54,12 +54,13 @@ internal sealed class PolygonInfo
     {
         int at = r.Offset;
         short polyId = (short)r.ReadUInt16("polygon id");
+        int numPtsAt = r.Offset;
         byte numPts = r.ReadByte("polygon point count");
         byte stippling = r.ReadByte("polygon stippling");
         int sidesType = r.ReadInt32("polygon sides type");
         short posSurface = r.ReadInt16("polygon positive surface");
         short negSurface = r.ReadInt16("polygon negative surface");
-        r.CheckCount(numPts, "polygon point count", 2);
+        r.CheckCount(numPts, "polygon point count", 2, numPtsAt);
         var ids = new ushort[numPts];
         for (int i = 0; i < ids.Length; i++)
         {
@@ -90,9 +91,9 @@ internal sealed class PolygonInfo
     }
 
     /// <summary>Reads <paramref name="count"/> polygons (each at least 12 bytes).</summary>
-    public static PolygonInfo[] UnPackList(ref RetailDataReader r, int count, int numVertices)
+    public static PolygonInfo[] UnPackList(ref RetailDataReader r, int count, int numVertices, int countAt)
     {
-        r.CheckCount((uint)count, "polygon count", 12);
+        r.CheckCount((uint)count, "polygon count", 12, countAt);
         var list = new PolygonInfo[count];
         for (int i = 0; i < count; i++)
         {

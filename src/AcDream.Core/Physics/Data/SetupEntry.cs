@@ -212,6 +212,7 @@ public sealed class SetupEntry
         var r = new RetailDataReader(data, "CSetup");
         uint id = r.ReadUInt32("id");
         uint flags = r.ReadUInt32("flags");
+        int numPartsAt = r.Offset;
         int numParts = r.ReadCount("part count", 4);
         var parts = new uint[numParts];
         for (int i = 0; i < numParts; i++)
@@ -222,7 +223,7 @@ public sealed class SetupEntry
         uint[] parents = [];
         if ((flags & HasParentFlag) != 0)
         {
-            r.CheckCount((uint)numParts, "parent index count", 4);
+            r.CheckCount((uint)numParts, "parent index count", 4, numPartsAt);
             parents = new uint[numParts];
             for (int i = 0; i < numParts; i++)
             {
@@ -233,7 +234,7 @@ public sealed class SetupEntry
         Vector3[] scales = [];
         if ((flags & HasDefaultScaleFlag) != 0)
         {
-            r.CheckCount((uint)numParts, "default scale count", 12);
+            r.CheckCount((uint)numParts, "default scale count", 12, numPartsAt);
             scales = new Vector3[numParts];
             for (int i = 0; i < numParts; i++)
             {
@@ -251,7 +252,7 @@ public sealed class SetupEntry
             uint key = r.ReadUInt32("placement key");
             string structure = r.Structure;
             r.Structure = "AnimFrame (CSetup placement)";
-            AnimFrame frame = AnimFrame.UnPack(ref r, numParts);
+            AnimFrame frame = AnimFrame.UnPack(ref r, numParts, numPartsAt);
             r.Structure = structure;
             ReadOnlySpan<AFrame> partFrames = frame.Frames;
             var frames = new Frame[partFrames.Length];

@@ -45,10 +45,11 @@ internal static class VertexArrayReader
     private static Vector3 UnPackVertex(ref RetailDataReader r)
     {
         r.ReadUInt16("vertex id");
+        int numUvsAt = r.Offset;
         int numUvs = r.ReadCount16("vertex uv count", 0);
         Vector3 position = r.ReadFiniteVector3("vertex position");
         r.ReadVector3("vertex normal");
-        r.CheckCount((uint)numUvs, "vertex uv count", 8);
+        r.CheckCount((uint)numUvs, "vertex uv count", 8, numUvsAt);
         r.Skip(numUvs * 8, "vertex uvs");
         return position;
     }

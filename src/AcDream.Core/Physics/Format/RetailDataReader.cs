@@ -90,10 +90,20 @@ internal ref struct RetailDataReader
         return new Vector3(x, y, z);
     }
 
-    /// <summary>Retail <c>AFrame::UnPack</c> (acclient.c:467618) and <c>AFrame::IsValid</c> (467555) through
-    /// <see cref="ReadAFrame"/>, as a library <see cref="Frame"/> (the rotation normalised by <c>set_rotate</c>):
-    /// a NaN or infinite component, or |q|² further than 5 × 0.0002 from 1, is a format error.</summary>
-    public Frame ReadFrame(string what = "frame") => ReadAFrame(what).ToFrame();
+    /// <summary>Retail <c>Frame::UnPack</c> (acclient.c:357132): the origin x, y, z, then the quaternion w, x, y, z (28
+    /// bytes), kept bit for bit (never normalised), tested as <c>Frame::IsValid</c> (357024) tests it (the same tests as
+    /// <see cref="ReadAFrame"/>: a NaN or infinite component, or |q|² further than 5 × 0.0002 from 1, is a format error),
+    /// then cached (<c>Frame::cache</c>).</summary>
+    // retail: Frame::UnPack (acclient.c:357132)
+    public Frame ReadFrame(string what = "frame")
+    {
+        AFrame stored = ReadAFrame(what);
+        Frame f = Frame.Identity;
+        f.Origin = stored.Origin;
+        f.SetQuaternionRaw(stored.Qw, stored.Qx, stored.Qy, stored.Qz);
+        f.Cache();
+        return f;
+    }
 
     /// <summary>Reads an <see cref="AFrame"/> (retail <c>AFrame::UnPack</c>, acclient.c:467618: origin x, y, z, then w, x, y,
     /// z, kept as read) and checks it as <c>AFrame::IsValid</c> (acclient.c:467555) does. <see cref="AFrame"/> is in
@@ -121,19 +131,37 @@ internal ref struct RetailDataReader
 
     /// <summary>
     /// A 32-bit element count, checked before anything is sized by it: each element takes at least
-    /// <paramref name="minBytesEach"/> bytes, so a count whose elements cannot fit in the bytes that remain is a format error.
+    /// <paramref name="minBytesEach"/> bytes, so a count whose elements cannot fit in the bytes that remain is a format error
+    /// at the count's own offset.
     /// </summary>
-    public int ReadCount(string what, int minBytesEach) => CheckCount(ReadUInt32(what), what, minBytesEach);
+    public int ReadCount(string what, int minBytesEach)
+    {
+        int at = _offset;
+        return CheckCount(ReadUInt32(what), what, minBytesEach, at);
+    }
 
     /// <summary>A 16-bit element count, checked as <see cref="ReadCount"/> checks.</summary>
-    public int ReadCount16(string what, int minBytesEach) => CheckCount(ReadUInt16(what), what, minBytesEach);
+    public int ReadCount16(string what, int minBytesEach)
+    {
+        int at = _offset;
+        return CheckCount(ReadUInt16(what), what, minBytesEach, at);
+    }
 
-    /// <summary>Checks a count read some other way (for example a byte, or a packed value) against the bytes that remain.</summary>
-    public readonly int CheckCount(uint count, string what, int minBytesEach)
+    /// <summary>A compressed element count (<see cref="ReadCompressedUInt32"/>: 1, 2 or 4 bytes), checked as
+    /// <see cref="ReadCount"/> checks.</summary>
+    public int ReadCompressedCount(string what, int minBytesEach)
+    {
+        int at = _offset;
+        return CheckCount(ReadCompressedUInt32(what), what, minBytesEach, at);
+    }
+
+    /// <summary>Checks a count read some other way (for example a byte, or a packed value) against the bytes that remain;
+    /// the format error names <paramref name="countAt"/>, the offset of the field the count was read from.</summary>
+    public readonly int CheckCount(uint count, string what, int minBytesEach, int countAt)
     {
         long need = (long)count * Math.Max(minBytesEach, 0);
         if (count > int.MaxValue || need > Remaining)
-            throw Error($"{what} count {count} needs at least {need} bytes, {Remaining} remain");
+            throw ErrorAt(countAt, $"{what} count {count} needs at least {need} bytes, {Remaining} remain after it");
         return (int)count;
     }
 

@@ -182,18 +182,21 @@ public partial struct MovementParameters
             throw r.Error($"MovementParameters of movement type {(uint)type} need {size} bytes, {r.Remaining} remain");
         }
 
+        int speedAt;
         if (size == MoveToNetSize)
         {
             Flags = (MovementParameterFlags)r.ReadUInt32("bitfield");
             DistanceToObject = r.ReadFiniteSingle("distance_to_object");
             MinDistance = r.ReadFiniteSingle("min_distance");
             FailDistance = r.ReadFiniteSingle("fail_distance");
+            speedAt = r.Offset;
             Speed = r.ReadFiniteSingle("speed");
             WalkRunThreshold = r.ReadFiniteSingle("walk_run_threshhold");
         }
         else
         {
             Flags = (MovementParameterFlags)r.ReadUInt32("bitfield");
+            speedAt = r.Offset;
             Speed = r.ReadFiniteSingle("speed");
         }
 
@@ -201,7 +204,7 @@ public partial struct MovementParameters
         // non-retail: the move-to API's speed bound, so that decoded parameters can go straight to the move-to manager
         if (Math.Abs(Speed) > MaxMoveToSpeed)
         {
-            throw r.Error($"speed {Speed} is beyond ±{MaxMoveToSpeed}");
+            throw r.ErrorAt(speedAt, $"speed {Speed} is beyond ±{MaxMoveToSpeed}");
         }
 
         return true;

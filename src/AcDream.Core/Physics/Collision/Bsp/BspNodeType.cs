@@ -11,7 +11,8 @@ namespace AcDream.Core.Physics.Collision.Bsp;
 /// negative one). The third letter is 'I' (here: marked) or 'n' (unmarked), and the client never reads it: a node's bounding
 /// sphere and in-plane polygons (<c>in_polys</c>) are stored or not by the tree's pack type, whatever the tag, and no query
 /// tests a split node's tag. A marked node and its unmarked twin therefore behave the same; both are kept so that data
-/// keeps its tag.
+/// keeps its tag. Any other tag (real drawing trees hold 'BPOL', 0x42504F4C, and 'BPFL', 0x4250464C) is, as
+/// <c>BSPNODE::UnPackChild</c> (acclient.c:363343) reads it, a split node with no stored child; it keeps its value, unnamed.
 /// </remarks>
 public enum BspNodeType : uint
 {

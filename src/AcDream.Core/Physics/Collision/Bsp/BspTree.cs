@@ -33,7 +33,9 @@ public sealed partial class BspTree
     /// <param name="root">Index of the root node.</param>
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">An index is out of range, a node is reached twice (a cycle or a shared
-    /// child), a node's type is unknown, or a plane or sphere is not finite.</exception>
+    /// child), or a plane or sphere is not finite. A node whose type is not a named <see cref="BspNodeType"/> is a split node,
+    /// as retail's <c>BSPNODE</c> of any tag other than LEAF and PORT is (real drawing trees hold <c>BPOL</c> and
+    /// <c>BPFL</c>).</exception>
     public BspTree(BspNode[] nodes, Polygon[] polygons, int[] polyIndices, int root = 0)
     {
         ArgumentNullException.ThrowIfNull(nodes);
@@ -88,11 +90,6 @@ public sealed partial class BspTree
         {
             int i = stack[--top];
             ref readonly BspNode n = ref nodes[i];
-            if (!Enum.IsDefined(n.Type))
-            {
-                throw new ArgumentException($"Node {i} has an unknown type.", nameof(nodes));
-            }
-
             if (!VectorMath.IsFinite(n.Sphere.Center) || !float.IsFinite(n.Sphere.Radius)
                 || !VectorMath.IsFinite(n.SplittingPlane.N) || !float.IsFinite(n.SplittingPlane.D))
             {

@@ -100,6 +100,7 @@ public static partial class MovementEventDecoder
     internal static void UnPackInterpretedState(ref RetailDataReader r, InterpretedMotionState state)
     {
         state.Reset();
+        int flagsAt = r.Offset;
         uint flags = r.ReadUInt32("InterpretedMotionState flags");
         if ((flags & 0x1) != 0)
         {
@@ -136,7 +137,7 @@ public static partial class MovementEventDecoder
             state.TurnSpeed = r.ReadFiniteSingle("turn speed");
         }
 
-        int actions = r.CheckCount((flags >> 7) & 0x1F, "actions", 8);
+        int actions = r.CheckCount((flags >> 7) & 0x1F, "actions", 8, flagsAt);
         for (int i = 0; i < actions; i++)
         {
             MotionCommand cmd = ReadCommand(ref r, "action");
