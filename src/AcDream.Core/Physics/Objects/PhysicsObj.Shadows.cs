@@ -188,6 +188,13 @@ public sealed partial class PhysicsObj
     // non-retail: retail never swaps the cells under an object (LScape loads blocks around the viewer before objects arrive)
     internal void RehomeShadows(RetailSweep sweep)
     {
+        if ((_state & PhysicsState.Static) != 0 && HasPartBoxes)
+        {
+            // retail: CLandBlock::init_static_objs (acclient.c:352786) re-lists a loaded block's statics this way
+            CalcCrossCellsStatic(sweep);
+            return;
+        }
+
         IPartArray? parts = PartArray;
         bool hasCyl = parts is IPartCollision pc && pc.CylSpheres.Length != 0;
         if ((State & PhysicsState.HasPhysicsBsp) != 0 || hasCyl)
