@@ -274,6 +274,17 @@ public sealed class ObjectFactory
             // non-retail: a part the placement frame does not cover stays at the object's frame (retail leaves it unplaced)
             frames[i] = placement is not null && i < placement.Length ? placement[i] : Frame.Identity;
             scales[i] = defaultScales.IsEmpty ? Vector3.One : defaultScales[i];
+            // non-retail: a part frame or default scale outside the library's domains fails the model here, before any object
+            // is made (a part array would refuse it half-way)
+            if (!InputLimits.IsChildFrameInDomain(frames[i]))
+            {
+                throw new RetailDataFormatException("CSetup", 0, $"0x{dataId:X8}: part {i}'s placement frame is outside the library's domain");
+            }
+
+            if (!InputLimits.IsScaleInDomain(scales[i].X) || !InputLimits.IsScaleInDomain(scales[i].Y) || !InputLimits.IsScaleInDomain(scales[i].Z))
+            {
+                throw new RetailDataFormatException("CSetup", 0, $"0x{dataId:X8}: part {i}'s default scale is outside [0.01, 100]");
+            }
             (Vector3 min, Vector3 max) = BoundingBox(gfx.Vertices);
             float radius = gfx.PhysicsSphere?.Radius ?? 0f;
             boxes[i] = new PartBox(frames[i], min, max, always2D, radius);

@@ -215,6 +215,13 @@ public sealed partial class WorldLoader
         IReadOnlyList<SceneryItem> scenery = ScenerySource?.Invoke(block, landBlock) ?? Array.Empty<SceneryItem>();
         foreach (SceneryItem s in scenery)
         {
+            // non-retail: a placement outside the library's domains is refused before the world changes
+            if (!InputLimits.IsScaleInDomain(s.Scale) || !s.Frame.IsValid() || !Spatial.VectorMath.IsFinite(s.Frame.Origin))
+            {
+                throw new ArgumentException($"Scenery 0x{s.ObjectId:X8} of block 0x{block:X8} has a scale outside [0.01, 100] or a bad frame.",
+                    nameof(ScenerySource));
+            }
+
             Objects.InitPartArrayModel(s.ObjectId, out _);
         }
 
