@@ -143,7 +143,7 @@ public class ObjectFactoryTests
     }
 
     [Fact]
-    public void AZeroHighByteId_IsThePlaceholder_EtherealAndIgnoringCollisions()
+    public void AZeroHighByteId_IsAnAnimObject_EtherealAndIgnoringCollisions()
     {
         // Retail makes Setup 0x02000000 | id (here the pine's 0x000010), ethereal, ignoring collisions, translucency 0.25.
         PhysicsObj o = new ObjectFactory(Models()).MakeObject(new PhysicsWorld(), Pine & 0x00FFFFFFu)!;

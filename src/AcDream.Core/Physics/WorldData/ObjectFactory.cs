@@ -49,7 +49,7 @@ public sealed class ObjectFactory
     /// </summary>
     /// <param name="world">The world that owns the object.</param>
     /// <param name="dataId">A Setup (0x02xxxxxx) or GfxObj (0x01xxxxxx) id; an id whose high byte is 0 is retail's
-    /// placeholder: Setup <c>0x02000000 | dataId</c>, ethereal, ignoring collisions, translucency 0.25.</param>
+    /// anim object (<c>makeAnimObject</c>): Setup <c>0x02000000 | dataId</c>, ethereal, ignoring collisions, translucency 0.25.</param>
     /// <param name="objectId">The object's id (0 for none). Retail: <c>object_iid</c>.</param>
     /// <param name="isDynamic">False for a static object (the STATIC bit). Retail: <c>bDynamic</c>.</param>
     /// <returns>The object, or null, adding nothing to the world, when retail's <c>makeObject</c> fails: another kind of id,
@@ -68,15 +68,15 @@ public sealed class ObjectFactory
             throw new ArgumentException($"An object with id 0x{objectId:X8} is already in this world.", nameof(objectId));
         }
 
-        ObjectModel? model = InitPartArrayModel(dataId, out bool placeholder);
-        return model is null ? null : Instantiate(world, model, objectId, isDynamic, placeholder);
+        ObjectModel? model = InitPartArrayModel(dataId, out bool animObject);
+        return model is null ? null : Instantiate(world, model, objectId, isDynamic, animObject);
     }
 
     /// <summary>The model of <paramref name="dataId"/>, or null when retail's <c>InitPartArrayObject</c> fails.</summary>
     // retail: CPhysicsObj::InitPartArrayObject (acclient.c:319645), the part array half
-    internal ObjectModel? InitPartArrayModel(uint dataId, out bool placeholder)
+    internal ObjectModel? InitPartArrayModel(uint dataId, out bool animObject)
     {
-        placeholder = false;
+        animObject = false;
         if (dataId == 0)
         {
             return null;
@@ -89,8 +89,8 @@ public sealed class ObjectFactory
             case 0x02:
                 return CreateSetup(dataId);
             case 0x00:
-                // retail: CPhysicsObj::makeAnimObject (acclient.c:315620) with the placeholder's setup
-                placeholder = true;
+                // retail: CPhysicsObj::makeAnimObject (acclient.c:315620) with that setup
+                animObject = true;
                 return CreateSetup(dataId | 0x02000000u);
             default:
                 return null;
@@ -102,7 +102,7 @@ public sealed class ObjectFactory
     /// </summary>
     // retail: CPhysicsObj::InitObjectBegin (acclient.c:317272), InitPartArrayObject's object half, InitObjectEnd
     // (acclient.c:317292)
-    internal PhysicsObj Instantiate(PhysicsWorld world, ObjectModel model, uint objectId, bool isDynamic, bool placeholder = false)
+    internal PhysicsObj Instantiate(PhysicsWorld world, ObjectModel model, uint objectId, bool isDynamic, bool animObject = false)
     {
         var parts = new SimplePartArray(model.Setup, model.NumParts);
         if (model.SortingSphere.Radius > 0f)
@@ -141,14 +141,14 @@ public sealed class ObjectFactory
         obj.PartArray = parts;
         // retail: CPhysicsObj::CacheHasPhysicsBSP (acclient.c:316513)
         state = model.HasPhysicsBsp ? state | PhysicsState.HasPhysicsBsp : state & ~PhysicsState.HasPhysicsBsp;
-        if (placeholder)
+        if (animObject)
         {
             state |= PhysicsState.Ethereal | PhysicsState.IgnoreCollisions;
         }
 
         state = InitDefaults(world, obj, model, state);
         obj.SetState(state);
-        if (placeholder)
+        if (animObject)
         {
             obj.SetTranslucency(0.25f, 0.0);
         }

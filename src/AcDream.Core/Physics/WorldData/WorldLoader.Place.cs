@@ -175,14 +175,14 @@ public sealed partial class WorldLoader
     // (its cell is missing): it is not created at all.
     private PhysicsObj? MakeStatic(LoadedBlock b, uint dataId, bool place)
     {
-        ObjectModel? model = Objects.InitPartArrayModel(dataId, out bool placeholder);
+        ObjectModel? model = Objects.InitPartArrayModel(dataId, out bool animObject);
         if (model is null)
         {
             b.Missing.AddRange(Objects.MissingFor(dataId));
             return null;
         }
 
-        return place ? Objects.Instantiate(_world, model, 0, isDynamic: false, placeholder) : null;
+        return place ? Objects.Instantiate(_world, model, 0, isDynamic: false, animObject) : null;
     }
 
     // retail: CLandBlock::add_static_object (acclient.c:351856)
