@@ -295,11 +295,17 @@ public sealed class ObjectFactory
 
     /// <summary>A part's GfxObj array: the degrade table the GfxObj names, when the source holds it, gives <c>gfxobj[0]</c>
     /// (its first level); otherwise the GfxObj itself. False when the GfxObj or that first level is missing.</summary>
-    // retail: CPhysicsPart::makePhysicsPart (acclient.c:315203) -> CPhysicsPart::LoadGfxObjArray (acclient.c:314891)
+    // retail: CPhysicsPart::makePhysicsPart (acclient.c:315550) -> CPhysicsPart::SetPart (acclient.c:315524) ->
+    // CPhysicsPart::LoadGfxObjArray (acclient.c:314891)
     private bool MakePhysicsPart(uint gfxObjId, [System.Diagnostics.CodeAnalysis.NotNullWhen(true)] out GfxObjEntry? gfx0, out bool always2D)
     {
         always2D = false;
         gfx0 = null;
+        if (gfxObjId == 0)
+        {
+            return false;
+        }
+
         GfxObjEntry? root = GetGfxObj(gfxObjId);
         if (root is null)
         {
