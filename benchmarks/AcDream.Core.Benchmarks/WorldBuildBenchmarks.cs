@@ -19,7 +19,7 @@ namespace AcDream.Core.Benchmarks;
 /// A synthetic full-detail world from retail entries (issue #35): flat landblocks (height index 20 of the one-metre table),
 /// each with 100 static objects in its landblock info (40 tree Setups with one cylinder, 30 rock GfxObjs with a physics BSP
 /// box, 30 grass Setups without shapes) and 300 scenery objects (the same three models, scale 0.8–1.2), on jittered grids
-/// that leave the 40 m square at the centre block's middle clear for the walking player.
+/// that leave the centre block's four middle cells (72..120 m) clear for the walking player.
 /// </summary>
 internal static class WorldBench
 {
@@ -96,7 +96,7 @@ internal static class WorldBench
         return items;
     }
 
-    // A jittered k × k grid over the block, 4 m from its edges, skipping the centre block's middle (76..116 m).
+    // A jittered k × k grid over the block, 4 m from its edges, skipping the centre block's four middle cells (72..120 m).
     private static IEnumerable<Vector2> Grid(Random rnd, int k, uint block)
     {
         bool centre = block == 0x8080FFFFu;
@@ -107,7 +107,7 @@ internal static class WorldBench
             {
                 var p = new Vector2(4f + step * (i + (float)rnd.NextDouble()), 4f + step * (j + (float)rnd.NextDouble()));
                 p = Vector2.Min(p, new Vector2(188f));
-                if (centre && p.X > 76f && p.X < 116f && p.Y > 76f && p.Y < 116f)
+                if (centre && p.X > 72f && p.X < 120f && p.Y > 72f && p.Y < 120f)
                 {
                     continue;
                 }

@@ -160,6 +160,25 @@ public class WorldLoaderTests
     }
 
     [Fact]
+    public void StaticObjects_AreNotVisitedByTheTick_AfterTheirFirst()
+    {
+        // Retail never updates a static object; here each sleeps after its first visit: with a walking player among ten
+        // statics, a tick visits the player alone.
+        PhysicsWorld world = World(out _);
+        new WorldLoader(world, Source(
+        [
+            (Pine, At(20f, 20f)), (Pine, At(40f, 20f)), (LowRock, At(60f, 20f)), (TallRock, At(80f, 20f)), (Grass, At(20f, 40f)),
+            (Grass, At(40f, 40f)), (Pine, At(150f, 150f)), (LowRock, At(160f, 150f)), (TallRock, At(170f, 150f)), (Grass, At(150f, 170f)),
+        ])).Load(Block);
+        PhysicsObj w = SweepScene.Walker(world, new Position(BspScene.OutdoorCell(100f, 100f), At(100f, 100f)), 0.5f);
+        world.Player = w;
+        SweepScene.SetWalk(w, new Vector3(0f, 1f, 0f));
+        SweepScene.Run(world, 5);
+        Assert.Equal(11, world.ObjectCount);
+        Assert.Equal(1, world.LastTickVisitCount);
+    }
+
+    [Fact]
     public void TheDoor_RefusesAWorldWithoutTheRetailSweepOverWorldCells()
     {
         Assert.Throws<ArgumentException>(() => new WorldLoader(new PhysicsWorld(), Source([])));
