@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using System.Numerics;
 using AcDream.Core.Fixtures.Data;
 using AcDream.Core.Physics.Objects;
@@ -161,5 +162,20 @@ public class ObjectFactoryTests
         var e = Assert.Throws<AcDream.Core.Physics.Format.RetailDataFormatException>(() => new ObjectFactory(s).MakeObject(world, Pine));
         Assert.Equal("CSetup", e.Structure);
         Assert.Equal(0, world.ObjectCount);
+    }
+
+    [Fact]
+    public void ADynamicBspObject_IsShadowedByItsPartBoxes_NotItsSortingSphere()
+    {
+        // The low rock's box (x ±1 m) at x 97.2 stays in land cell (4, 4) (96..120 m); its sorting sphere (the BSP root's,
+        // radius about 1.43 m) would reach back into cell (3, 4). Retail's calc_cross_cells lists a BSP object by its parts'
+        // boxes (find_bbox_cell_list, acclient.c:318275).
+        PhysicsWorld world = World(out _);
+        new WorldLoader(world, Source([])).Load(Block);
+        var f = new ObjectFactory(Models());
+        PhysicsObj rock = f.MakeObject(world, LowRock)!;
+        Assert.True(rock.EnterWorld(new Position(BspScene.OutdoorCell(97.2f, 100f), At(97.2f, 100f))));
+        uint[] cells = rock.ShadowObjects.ToArray().Select(x => x.CellId).ToArray();
+        Assert.Equal(new[] { BspScene.OutdoorCell(100f, 100f) }, cells);
     }
 }

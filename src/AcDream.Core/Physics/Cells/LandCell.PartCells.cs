@@ -2,14 +2,10 @@ using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Primitives;
+using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Cells;
-
-/// <summary>One part of a static object placed in its landblock: its position, its GfxObj's bounding box (part-local),
-/// whether it is drawn as a 2-D sprite and its sphere's radius then (retail <c>CPhysicsPart</c>: <c>pos</c>,
-/// <c>GetBoundingBox</c>, <c>Always2D</c>).</summary>
-internal readonly record struct PlacedPartBox(Position Pos, Vector3 Min, Vector3 Max, bool Always2D, float Radius);
 
 // The outdoor cells a static object's parts cover (the part-based cell list of calc_cross_cells_static).
 public sealed partial class LandCell

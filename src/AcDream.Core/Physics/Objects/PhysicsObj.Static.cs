@@ -75,7 +75,7 @@ public sealed partial class PhysicsObj
     /// stood in for by the sphere queries with the object's sorting sphere (docs/divergences.md, "Static objects' indoor
     /// cell lists").</remarks>
     // retail: CPhysicsObj::find_bbox_cell_list (acclient.c:318275)
-    private void FindBboxCellList(RetailSweep sweep, CellArray ca)
+    internal void FindBboxCellList(RetailSweep sweep, CellArray ca)
     {
         ca.NumCells = 0;
         ca.AddedOutside = false;
@@ -85,9 +85,15 @@ public sealed partial class PhysicsObj
             return;
         }
 
-        ReadOnlySpan<PartBox> boxes = PartArray is SimplePartArray simple ? simple.PartBoxes : default;
+        ReadOnlySpan<PartBox> boxes = default;
+        PlacedPartBox[] placed = Array.Empty<PlacedPartBox>();
+        if (PartArray is SimplePartArray simple)
+        {
+            boxes = simple.PartBoxes;
+            placed = simple.PlacedBoxes;
+        }
+
         int numParts = boxes.Length;
-        PlacedPartBox[] placed = numParts == 0 ? Array.Empty<PlacedPartBox>() : new PlacedPartBox[numParts];
         Position p = Position;
         for (int i = 0; i < numParts; i++)
         {

@@ -15,3 +15,9 @@ namespace AcDream.Core.Physics.Objects.Parts;
 /// <param name="Always2D">Retail <c>CPhysicsPart::Always2D</c>: the part's first level of detail is not a 3-D mesh.</param>
 /// <param name="Radius">The physics sphere's radius (else the drawing sphere's), for a 2-D part.</param>
 internal readonly record struct PartBox(Frame LocalFrame, Vector3 Min, Vector3 Max, bool Always2D, float Radius);
+
+/// <summary>One part of a static object placed in its landblock: its position, its GfxObj's bounding box (part-local),
+/// whether it is drawn as a 2-D sprite and its sphere's radius then (retail <c>CPhysicsPart</c>: <c>pos</c>,
+/// <c>GetBoundingBox</c>, <c>Always2D</c>).</summary>
+internal readonly record struct PlacedPartBox(Position Pos, Vector3 Min, Vector3 Max, bool Always2D, float Radius);
+

@@ -12,5 +12,12 @@ public sealed partial class SimplePartArray
     internal ReadOnlySpan<PartBox> PartBoxes => _partBoxes;
 
     /// <summary>Sets the parts' boxes (at creation, never in a tick).</summary>
-    internal void SetPartBoxes(PartBox[] boxes) => _partBoxes = boxes;
+    internal void SetPartBoxes(PartBox[] boxes)
+    {
+        _partBoxes = boxes;
+        PlacedBoxes = new PlacedPartBox[boxes.Length];
+    }
+
+    /// <summary>Scratch for the parts placed where the object stands (one per part), so that a cell list allocates nothing.</summary>
+    internal PlacedPartBox[] PlacedBoxes { get; private set; } = Array.Empty<PlacedPartBox>();
 }
