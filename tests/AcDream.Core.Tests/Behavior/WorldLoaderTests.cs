@@ -112,6 +112,25 @@ public class WorldLoaderTests
     }
 
     [Fact]
+    public void AStaticReachingIntoABlockLoadedLater_IsShadowedThereOnceItLoads()
+    {
+        // The low rock's box (x ±1 m) at x 191.5 reaches 0.5 m into the east block 0x8180, not loaded yet: its shadow there
+        // has no cell. Loading that block lists it in the block's cell (retail: init_static_objs' later call re-lists the
+        // statics not completely visible with calc_cross_cells_static).
+        DictionarySource s = Source([(LowRock, At(191.5f, 100f))]);
+        var height = new byte[81];
+        Array.Fill(height, (byte)BspScene.Ground);
+        s.Entries[0x8180FFFF] = RetailEntries.LandBlock(0x8180FFFF, false, new ushort[81], height);
+        PhysicsWorld world = World(out _);
+        var loader = new WorldLoader(world, s);
+        PhysicsObj rock = loader.Load(Block)[0].Objects[0].Object!;
+        uint east = SweepScene.CellId(0x81, 0x80, 0, 4);
+        Assert.Null(rock.ShadowObjects.ToArray().Single(x => x.CellId == east).Cell);
+        loader.Load(0x8180FFFF);
+        Assert.NotNull(rock.ShadowObjects.ToArray().Single(x => x.CellId == east).Cell);
+    }
+
+    [Fact]
     public void AnIndoorCellsStatics_StandInTheirCell()
     {
         DictionarySource s = RoomSceneEntries.Source();
