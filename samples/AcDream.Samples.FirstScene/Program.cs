@@ -1,4 +1,7 @@
 using System;
+using System.Collections.Generic;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.WorldData;
 using System.Globalization;
 using System.IO;
 using System.Numerics;
@@ -72,12 +75,25 @@ public static class Program
 
         // 1. Terrain: the landblocks the client has loaded (real data when found).
         terrainDir ??= synthetic ? null : FindTerrain();
-        TerrainWorld terrain = terrainDir is not null ? Scene.LoadHoltburg(terrainDir) : Scene.Synthetic();
+        SampleData data = terrainDir is not null ? Scene.LoadHoltburg(terrainDir) : Scene.Synthetic();
         Console.WriteLine(terrainDir is not null ? $"terrain: real Holtburg 3x3 from {terrainDir}" : "terrain: synthetic 3x3 slopes (no ac-terrain folder found)");
-        Scene.AddHut(terrain);
+        Scene.AddContents(data);
 
-        // 2. The world over that terrain: the retail collision sweep.
-        var world = new PhysicsWorld(terrain);
+        // 2. The world, built from the client's data through the one door (docs/world.md): the 3 x 3 landblocks' terrain, then
+        //    their buildings, static objects and scenery, in retail's order. The world sweeps with the retail collision
+        //    sweep over those cells; each WorldObject is what a renderer draws (model id, cell, frame, scale).
+        var world = new PhysicsWorld(new WorldCells(new TerrainWorld(data.HeightTable)));
+        var loader = new WorldLoader(world, data);
+        IReadOnlyList<WorldBlock> blocks = loader.Load(data.BlockIds);
+        int objects = 0, missing = 0;
+        foreach (WorldBlock b in blocks)
+        {
+            objects += b.Objects.Count;
+            missing += b.MissingIds.Count;
+        }
+
+        Console.WriteLine($"world: {blocks.Count} landblocks, {objects} objects (buildings, statics, scenery), {missing} missing ids");
+        TerrainWorld terrain = loader.Cells.Terrain;
 
         // 3. The player: a part array from the human Setup and the character's skills (its weenie), placed on the ground,
         //    made the world's player (which gives it retail's movement manager and motion interpreter). SetupIssues names

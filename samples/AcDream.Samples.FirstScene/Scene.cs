@@ -1,20 +1,17 @@
 using System;
-using System.Collections.Generic;
 using System.IO;
 using System.Numerics;
-using AcDream.Core.Physics.Cells;
-using AcDream.Core.Physics.Collision.Bsp;
-using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Spatial;
-using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
 using AcDream.Core.Physics.Data;
+using AcDream.Core.Fixtures.Data;
 
 namespace AcDream.Samples.FirstScene;
 
 /// <summary>
-/// The static scene: the 3 × 3 landblocks around Holtburg (0xA8B3-0xAAB5) from the real terrain data when it is found, else
-/// synthetic gentle slopes with the same ids, and a small hut (a BSP box) on the centre block 0xA9B4.
+/// The static scene as a client's data files would hand it over (<see cref="SampleData"/>): the 3 × 3 landblocks around
+/// Holtburg (0xA8B3-0xAAB5) from the real terrain data when it is found, else synthetic gentle slopes with the same ids, and
+/// on the centre block 0xA9B4 a small hut (a building whose model is a GfxObj box), two trees and a rock.
 /// </summary>
 internal static class Scene
 {
@@ -47,25 +44,29 @@ internal static class Scene
         return p;
     }
 
-    /// <summary>The real Holtburg blocks read from <paramref name="dir"/> (the ac-terrain folder).</summary>
-    public static TerrainWorld LoadHoltburg(string dir)
+    /// <summary>The hut's model (a GfxObj box), a tree's Setup and its drawn part, and a rock (a low GfxObj box).</summary>
+    public const uint HutModel = 0x01000100, TreeSetup = 0x02000200, TreePart = 0x01000201, Rock = 0x01000202;
+
+    /// <summary>The real Holtburg blocks read from <paramref name="dir"/> (the ac-terrain folder), as a client's data files
+    /// would hand them over.</summary>
+    public static SampleData LoadHoltburg(string dir)
     {
-        var terrain = new TerrainWorld(TerrainDataFiles.ReadHeightTableCsv(Path.Combine(dir, "land_height_table.csv")));
+        var data = new SampleData(TerrainDataFiles.ReadHeightTableCsv(Path.Combine(dir, "land_height_table.csv")));
         foreach (LandBlockEntry d in TerrainDataFiles.ReadLandblockSampleCsv(Path.Combine(dir, "landblock_heights_sample.csv")))
         {
             int bx = (int)(d.Id >> 24), by = (int)((d.Id >> 16) & 0xFF);
             if (Math.Abs(bx - BlockX) <= 1 && Math.Abs(by - BlockY) <= 1)
             {
-                terrain.AddLandBlock(d.Id, d.Height, d.Terrain);
+                data.AddBlock(d.Id, d.Height, d.Terrain);
             }
         }
 
-        return terrain;
+        return data;
     }
 
     /// <summary>Synthetic terrain with the same block ids: a height table of 0.5 m per index and a gentle slope rising 0.5 m
     /// per vertex (24 m) to the north-east, continuous across the block edges; terrain type 1 (solid ground) everywhere.</summary>
-    public static TerrainWorld Synthetic()
+    public static SampleData Synthetic()
     {
         var table = new float[LandHeightTable.Count];
         for (int i = 0; i < table.Length; i++)
@@ -73,7 +74,7 @@ internal static class Scene
             table[i] = 0.5f * i;
         }
 
-        var terrain = new TerrainWorld(new LandHeightTable(table));
+        var data = new SampleData(new LandHeightTable(table));
         for (int bx = BlockX - 1; bx <= BlockX + 1; bx++)
         {
             for (int by = BlockY - 1; by <= BlockY + 1; by++)
@@ -90,39 +91,40 @@ internal static class Scene
                     }
                 }
 
-                terrain.AddLandBlock(LandBlock.MakeId(bx, by), heights, codes);
+                data.AddBlock(LandBlock.MakeId(bx, by) | 0xFFFFu, heights, codes);
             }
         }
 
-        return terrain;
+        return data;
     }
 
     /// <summary>
-    /// Builds the hut (a closed box of one-sided quads facing out, compiled to a BSP tree) and attaches it, as a building, to
-    /// every land cell its footprint touches: outdoor sweeps test it from there.
+    /// The centre block's contents, as its landblock info (0xXXYYFFFE) lists them: the hut (a building whose model is a
+    /// GfxObj box, 10 × 6 m, walls from 3 m under to 3 m over the ground at its centre), two trees (a Setup with one
+    /// cylinder, r 1.5 m) and a rock (a GfxObj box 1.6 m wide, 0.4 m high) away from the player's path.
     /// </summary>
-    public static BuildingObj AddHut(TerrainWorld terrain)
+    public static void AddContents(SampleData data)
     {
+        // The ground under each object, from the terrain the client's files describe.
+        var probe = new TerrainWorld(data.HeightTable);
+        LandBlockEntry centre = LandBlockEntry.UnPack(data.Entries[CentreBlock]);
+        probe.AddLandBlock(centre.ToLandBlock(data.HeightTable));
         Vector2 c = (HutMin + HutMax) * 0.5f;
-        Position at = OnGround(terrain, c.X, c.Y, 0f);
-        float z = at.Frame.Origin.Z;
-        var polys = new List<Polygon>();
-        AddBox(polys, new Vector3(HutMin.X - c.X, HutMin.Y - c.Y, -3f), new Vector3(HutMax.X - c.X, HutMax.Y - c.Y, 3f));
-        BspTree bsp = BspBuilder.Build(polys.ToArray());
-        var part = new PhysicsPart(new GfxObjPhysics(bsp), new Position(at.ObjCellId, new Frame(new Vector3(c.X, c.Y, z), Quaternion.Identity)), Vector3.One);
-        var hut = new BuildingObj(part, Array.Empty<BldPortal>());
-        for (int cx = (int)((HutMin.X - 1f) / 24f); cx <= (int)((HutMax.X + 1f) / 24f); cx++)
-        {
-            for (int cy = (int)((HutMin.Y - 1f) / 24f); cy <= (int)((HutMax.Y + 1f) / 24f); cy++)
-            {
-                LandCell cell = terrain.GetLandCell(LandDefs.LCoordToGid(BlockX * 8 + cx, BlockY * 8 + cy))
-                    ?? throw new InvalidOperationException("The hut's cells are not loaded.");
-                cell.Building = hut;
-            }
-        }
+        Frame At(float x, float y) => new(OnGround(probe, x, y, 0f).Frame.Origin, Quaternion.Identity);
 
-        return hut;
+        data.Entries[HutModel] = WorldDataBytes.BoxGfxObj(HutModel,
+            new Vector3(HutMin.X - c.X, HutMin.Y - c.Y, -3f), new Vector3(HutMax.X - c.X, HutMax.Y - c.Y, 3f));
+        data.Entries[TreePart] = WorldDataBytes.DrawingGfxObj(TreePart, new Vector3(-2f, -2f, 0f), new Vector3(2f, 2f, 12f));
+        data.Entries[TreeSetup] = WorldDataBytes.CylinderSetup(TreeSetup, TreePart, 1.5f, 12f, -1f);
+        data.Entries[Rock] = WorldDataBytes.BoxGfxObj(Rock, new Vector3(-0.8f, -0.8f, -0.2f), new Vector3(0.8f, 0.8f, 0.4f));
+        data.Entries[(CentreBlock & 0xFFFF0000u) | 0xFFFEu] = WorldDataBytes.LandBlockInfo((CentreBlock & 0xFFFF0000u) | 0xFFFEu,
+            [(TreeSetup, At(30f, 170f)), (TreeSetup, At(170f, 170f)), (Rock, At(20f, 20f))],
+            [(HutModel, At(c.X, c.Y))]);
+        data.Entries[CentreBlock] = WorldDataBytes.LandBlock(CentreBlock, true, centre.Terrain, centre.Height);
     }
+
+    /// <summary>The centre landblock's id.</summary>
+    public const uint CentreBlock = ((uint)BlockX << 24) | ((uint)BlockY << 16) | 0xFFFFu;
 
     /// <summary>Horizontal distance from (x, y) to the hut's footprint (0 inside).</summary>
     public static float DistanceToHut(Vector3 p)
@@ -131,19 +133,4 @@ internal static class Scene
         float dy = MathF.Max(MathF.Max(HutMin.Y - p.Y, 0f), p.Y - HutMax.Y);
         return MathF.Sqrt(dx * dx + dy * dy);
     }
-
-    // The six faces of the box min..max, each a quad counter-clockwise seen from outside.
-    private static void AddBox(List<Polygon> polys, Vector3 min, Vector3 max)
-    {
-        float x0 = min.X, y0 = min.Y, z0 = min.Z, x1 = max.X, y1 = max.Y, z1 = max.Z;
-        Add(polys, new(x1, y0, z0), new(x1, y1, z0), new(x1, y1, z1), new(x1, y0, z1)); // +X
-        Add(polys, new(x0, y0, z0), new(x0, y0, z1), new(x0, y1, z1), new(x0, y1, z0)); // -X
-        Add(polys, new(x0, y1, z0), new(x0, y1, z1), new(x1, y1, z1), new(x1, y1, z0)); // +Y
-        Add(polys, new(x0, y0, z0), new(x1, y0, z0), new(x1, y0, z1), new(x0, y0, z1)); // -Y
-        Add(polys, new(x0, y0, z1), new(x1, y0, z1), new(x1, y1, z1), new(x0, y1, z1)); // +Z
-        Add(polys, new(x0, y0, z0), new(x0, y1, z0), new(x1, y1, z0), new(x1, y0, z0)); // -Z
-    }
-
-    private static void Add(List<Polygon> polys, Vector3 a, Vector3 b, Vector3 c, Vector3 d) =>
-        polys.Add(new Polygon((short)polys.Count, new[] { a, b, c, d }, new ushort[] { 0, 1, 2, 3 }));
 }

@@ -43,7 +43,6 @@ public class LandBlockLoaderTests
         // The building stands on the land cell under its origin (100, 100): cell (4, 4) of the block.
         Assert.Same(c.Buildings[0], cells.Terrain.GetLandCell(BspScene.OutdoorCell(100f, 100f))!.Building);
         Assert.Equal(RoomScene.Room, c.Buildings[0].Portals[0].OtherCellId);
-        Assert.Empty(c.BuildingsWithoutShell);
     }
 
     [Fact]
@@ -115,6 +114,24 @@ public class LandBlockLoaderTests
         Assert.Equal("CEnvCell", e.Structure);
         Assert.Equal(8, e.Offset);
         Assert.Equal(0, cells.EnvCellCount);
+    }
+
+    [Fact]
+    public void TwoShellsInOneLandCell_TheFirstWins_AndAShellOutsideTheBlockIsDropped()
+    {
+        // Retail CSortCell::add_building keeps the first (the loader used to keep the last), and init_buildings drops a
+        // building whose origin is outside the block (the loader used to clamp it onto edge cell (0, 4)).
+        var cells = new WorldCells(SweepScene.Terrain());
+        DictionarySource s = WorldSceneEntries.Source([],
+        [
+            new BuildingDef(WorldSceneEntries.LowRock, WorldSceneEntries.At(100f, 100f), 0, []),
+            new BuildingDef(WorldSceneEntries.TallRock, WorldSceneEntries.At(110f, 100f), 0, []),
+            new BuildingDef(WorldSceneEntries.LowRock, WorldSceneEntries.At(-5f, 100f), 0, []),
+        ]);
+        LandBlockContent c = LandBlockLoader.Load(cells, WorldSceneEntries.Block, s);
+        Assert.Equal(2, c.Buildings.Count);
+        Assert.Same(c.Buildings[0], cells.Terrain.GetLandCell(BspScene.OutdoorCell(100f, 100f))!.Building);
+        Assert.Null(cells.Terrain.GetLandCell(BspScene.OutdoorCell(0f, 100f))!.Building);
     }
 
     [Fact]

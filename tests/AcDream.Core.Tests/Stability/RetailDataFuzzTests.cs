@@ -30,6 +30,7 @@ public class RetailDataFuzzTests
         yield return ["CEnvCell"];
         yield return ["CLandBlock"];
         yield return ["CLandBlockInfo"];
+        yield return ["GfxObjDegradeInfo"];
     }
 
     private static byte[] Valid(string name)
@@ -51,6 +52,8 @@ public class RetailDataFuzzTests
             case "CLandBlock":
                 (ushort[] ter, byte[] h) = LandBlockEntryTests.Ramp();
                 return RetailEntries.LandBlock(0x8080FFFF, true, ter, h);
+            case "GfxObjDegradeInfo":
+                return WorldEntries.DegradeInfo(0x11000001, (0x01000001, 1), (0x01000002, 2), (0, 1));
             default:
                 return LandBlockEntryTests.Info();
         }
@@ -79,6 +82,9 @@ public class RetailDataFuzzTests
                     break;
                 case "CLandBlock":
                     LandBlockEntry.UnPack(bytes).ToLandBlock(SweepScene.MetreTable());
+                    break;
+                case "GfxObjDegradeInfo":
+                    GfxObjDegradeInfoEntry.UnPack(bytes);
                     break;
                 default:
                     LandBlockInfoEntry.UnPack(bytes);
@@ -193,6 +199,63 @@ public class RetailDataFuzzTests
                 Assert.Equal(0, cells.Terrain.LandBlockCount);
                 Assert.Equal(0, cells.EnvCellCount);
             }
+        }
+    }
+
+    [Fact]
+    public void TheWorldDoor_WithOneMutatedEntry_ThrowsOnlyTheFormatOrMissingEntryException_AndAddsNothingThen()
+    {
+        // The door reads the block, its info, and the Setups and GfxObjs of its statics and buildings (the pine, grass, rocks
+        // and the Setup building): one of them mutated or truncated either still builds (a missing model id only fails its
+        // object), or throws the format exception (or, for a terrain entry, the missing-entry exception) with nothing added.
+        var rng = new Random(35);
+        DictionarySource clean = WorldSceneEntries.Source(
+            [(WorldSceneEntries.Pine, WorldSceneEntries.At(50f, 60f)), (WorldSceneEntries.LowRock, WorldSceneEntries.At(96.5f, 60f)),
+                (WorldSceneEntries.Grass, WorldSceneEntries.At(20f, 20f))],
+            [new BuildingDef(WorldSceneEntries.Building, WorldSceneEntries.At(100f, 100f), 0, [])]);
+        clean.Entries[0x11000001] = WorldEntries.DegradeInfo(0x11000001, (WorldSceneEntries.Box, 1));
+        clean.Entries[WorldSceneEntries.Blade] = WorldEntries.DrawingOnlyGfxObj(WorldSceneEntries.Blade, System.Numerics.Vector3.Zero,
+            System.Numerics.Vector3.One, degrade: 0x11000001);
+        var ids = new List<uint>(clean.Entries.Keys);
+        for (int i = 0; i < 400; i++)
+        {
+            var s = new DictionarySource();
+            foreach (KeyValuePair<uint, byte[]> e in clean.Entries)
+            {
+                s.Entries[e.Key] = (byte[])e.Value.Clone();
+            }
+
+            byte[] b = s.Entries[ids[i % ids.Count]];
+            if (i % 2 == 0)
+            {
+                for (int k = rng.Next(1, 4); k > 0; k--)
+                {
+                    b[rng.Next(b.Length)] = (byte)rng.Next(256);
+                }
+            }
+            else
+            {
+                s.Entries[ids[i % ids.Count]] = b.AsSpan(0, rng.Next(b.Length)).ToArray();
+            }
+
+            AcDream.Core.Physics.World.PhysicsWorld world = WorldSceneEntries.World(out AcDream.Core.Physics.Cells.WorldCells cells);
+            var loader = new AcDream.Core.Physics.WorldData.WorldLoader(world, s);
+            try
+            {
+                loader.Load(WorldSceneEntries.Block);
+                continue;
+            }
+            catch (RetailDataFormatException e)
+            {
+                Assert.False(string.IsNullOrEmpty(e.Structure));
+            }
+            catch (ArgumentException e) when (e.Message.StartsWith("The data source holds no entry", StringComparison.Ordinal))
+            {
+            }
+
+            Assert.Equal(0, world.ObjectCount);
+            Assert.Equal(0, cells.Terrain.LandBlockCount);
+            Assert.Empty(loader.LoadedBlockIds);
         }
     }
 }

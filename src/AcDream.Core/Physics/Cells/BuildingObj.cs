@@ -26,8 +26,47 @@ public sealed class BuildingObj
         _portals = (BldPortal[])portals.Clone();
     }
 
-    /// <summary>The shell part (retail: <c>part_array->parts[0]</c>).</summary>
-    public PhysicsPart Part { get; }
+    // A building made from its data id: its part 0 may have no physics BSP (nothing of it collides; its doors still lead in).
+    internal BuildingObj(PhysicsPart? part, BldPortal[] portals, uint numLeaves)
+    {
+        Part = part;
+        _portals = portals;
+        NumLeaves = numLeaves;
+    }
+
+    /// <summary>The shell part (retail: <c>part_array->parts[0]</c>, the only part a building collides through), or null when
+    /// that part's GfxObj has no physics BSP (a building made from its data id; nothing of it collides).</summary>
+    public PhysicsPart? Part { get; }
+
+    /// <summary>Retail <c>num_leaves</c>: the size of the renderer's leaf-cell array (<c>leaf_cells</c>). Physics never uses it:
+    /// a building hangs on the one land cell under its origin.</summary>
+    public uint NumLeaves { get; }
+
+    /// <summary>The land cell the building hangs on (0 until placed). Retail: <c>set_cell_id</c> in
+    /// <c>CBuildingObj::add_to_cell</c>.</summary>
+    public uint CellId { get; private set; }
+
+    /// <summary>Hangs the building on <paramref name="cell"/>: the cell keeps it unless it already holds one (the first
+    /// wins); the building records the cell either way.</summary>
+    // retail: CBuildingObj::add_to_cell (acclient.c:719256)
+    internal void AddToCell(LandCell cell)
+    {
+        cell.AddBuilding(this);
+        CellId = cell.Id;
+    }
+
+    /// <summary>Takes the building off its cell: the cell's building is cleared (whichever it was) and the building's cell
+    /// id reset.</summary>
+    // retail: CBuildingObj::remove (acclient.c:719056) -> CSortCell::remove_building (acclient.c:356080)
+    internal void Remove(LandCell? cell)
+    {
+        if (cell is not null)
+        {
+            cell.Building = null;
+        }
+
+        CellId = 0;
+    }
 
     /// <summary>The doors. Retail: <c>portals</c>.</summary>
     public ReadOnlySpan<BldPortal> Portals => _portals;
@@ -41,6 +80,12 @@ public sealed class BuildingObj
     internal TransitionState FindBuildingCollisions(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
+        if (Part is null)
+        {
+            // retail: CPhysicsPart::find_obj_collisions answers OK for a part without a physics BSP
+            return TransitionState.Ok;
+        }
+
         transition.SpherePath.BldgCheck = true;
         TransitionState ts = Part.FindObjCollisions(transition);
         transition.SpherePath.BldgCheck = false;

@@ -153,6 +153,17 @@ public sealed partial class LandCell
     /// <summary>The building on this cell, or null. Retail: <c>CSortCell::building</c>.</summary>
     public BuildingObj? Building { get; set; }
 
+    /// <summary>Keeps <paramref name="building"/> unless the cell already holds one: the first building wins.</summary>
+    // retail: CSortCell::add_building (acclient.c:356073)
+    internal void AddBuilding(BuildingObj building)
+    {
+        Building ??= building;
+    }
+
+    /// <summary>The cell's restriction object (an object id; 0 for none), set from the landblock info's restriction table when
+    /// the block's static objects are made. Retail: <c>CLandCell</c> +216, written at acclient.c:352869–352884.</summary>
+    public uint RestrictionObj { get; internal set; }
+
     /// <summary>The building's shell against the check spheres; OK without a building.</summary>
     // retail: CSortCell::find_collisions (acclient.c:356106)
     internal TransitionState FindBuildingCollisions(Transition transition) =>

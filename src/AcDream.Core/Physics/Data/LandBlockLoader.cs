@@ -12,15 +12,12 @@ namespace AcDream.Core.Physics.Data;
 /// <summary>What <see cref="LandBlockLoader.Load"/> put into the world, and what it read but did not place.</summary>
 public sealed class LandBlockContent
 {
-    internal LandBlockContent(LandBlock landBlock, LandBlockInfoEntry? info, EnvCell[] envCells, BuildingObj[] buildings,
-        BuildingInfo[] buildingsWithoutShell, StaticObjectInfo[] staticObjects)
+    internal LandBlockContent(LandBlock landBlock, LandBlockInfoEntry? info, EnvCell[] envCells, BuildingObj[] buildings)
     {
         LandBlock = landBlock;
         Info = info;
         EnvCells = envCells;
         Buildings = buildings;
-        BuildingsWithoutShell = buildingsWithoutShell;
-        StaticObjects = staticObjects;
     }
 
     /// <summary>The landblock (terrain) now in the world.</summary>
@@ -32,22 +29,16 @@ public sealed class LandBlockContent
     /// <summary>The indoor cells now in the world, in id order.</summary>
     public IReadOnlyList<EnvCell> EnvCells { get; }
 
-    /// <summary>The buildings now standing on the block's land cells.</summary>
+    /// <summary>The GfxObj-shell buildings now hung on the block's land cells (each on the cell under its origin; the first of a
+    /// cell wins). Setup-model buildings, static objects and scenery are built by <c>WorldData.WorldLoader</c>.</summary>
     public IReadOnlyList<BuildingObj> Buildings { get; }
-
-    /// <summary>Buildings whose model is not a GfxObj with physics (a Setup model, or a GfxObj without a physics BSP): read,
-    /// not placed.</summary>
-    public IReadOnlyList<BuildingInfo> BuildingsWithoutShell { get; }
-
-    /// <summary>The static objects of the block and of its cells (ids and landblock-local frames), read, not placed: the client
-    /// creates them as objects from their Setups.</summary>
-    public IReadOnlyList<StaticObjectInfo> StaticObjects { get; }
 }
 
 /// <summary>
-/// Puts a landblock from the game's data into a world: its terrain (0xXXYYFFFF), its indoor cells (0xXXYY0100 …, the count
-/// from 0xXXYYFFFE) with the environments they name, and its buildings with their GfxObj shells and doors, all unpacked by the
-/// retail ports and added only once every entry has been read (a format error adds nothing).
+/// Puts a landblock's geometry from the game's data into a world: its terrain (0xXXYYFFFF), its indoor cells (0xXXYY0100 …,
+/// the count from 0xXXYYFFFE) with the environments they name, and its buildings with GfxObj shells and their doors, all
+/// unpacked by the retail ports and added only once every entry has been read (a format error adds nothing). The whole world
+/// of a block (Setup buildings, static objects, scenery) is built by <c>WorldData.WorldLoader</c>, the client's door.
 /// </summary>
 /// <remarks>Retail loads the same entries through <c>CLandBlock::InitLoad</c> / <c>init_buildings</c> and
 /// <c>CEnvCell::UnPack</c>; the order of the reads here is the client's contract, described in <c>docs/retail-data.md</c>.</remarks>
@@ -55,8 +46,9 @@ public static class LandBlockLoader
 {
     /// <summary>
     /// Reads landblock <paramref name="blockId"/> from <paramref name="source"/> and adds it to <paramref name="cells"/>
-    /// (replacing a landblock or indoor cells already loaded at the same ids). Each building stands on the land cell under
-    /// its frame's origin.
+    /// (replacing a landblock or indoor cells already loaded at the same ids). Each building hangs on the land cell under its
+    /// frame's origin (the first of a cell wins, retail <c>CSortCell::add_building</c>); a building whose origin lies outside the
+    /// block is dropped (retail <c>CLandBlock::init_buildings</c>).
     /// </summary>
     /// <param name="cells">The world's cells (terrain and indoor cells).</param>
     /// <param name="blockId">The landblock id (0xXXYYFFFF; any cell id of the block is accepted).</param>
@@ -71,7 +63,7 @@ public static class LandBlockLoader
         ArgumentNullException.ThrowIfNull(cells);
         ArgumentNullException.ThrowIfNull(source);
         uint block = LandDefs.BlockIdOf(blockId);
-        if (!LandDefs.BlockIdToLCoord(block, out int lx, out int ly))
+        if (!LandDefs.BlockIdToLCoord(block, out _, out _))
         {
             throw new ArgumentException($"Landblock 0x{block:X8} lies outside the world.", nameof(blockId));
         }
@@ -82,13 +74,10 @@ public static class LandBlockLoader
         LandBlockInfoEntry? info = null;
         var envCells = new List<EnvCell>();
         var buildings = new List<(BuildingObj Building, uint LandCell)>();
-        var noShell = new List<BuildingInfo>();
-        var statics = new List<StaticObjectInfo>();
         if (land.HasInfo)
         {
             info = LandBlockInfoEntry.UnPack(Entry(source, (block & 0xFFFF0000u) | 0xFFFEu));
             Expect("CLandBlockInfo", info.Id, (block & 0xFFFF0000u) | 0xFFFEu);
-            statics.AddRange(info.Objects.ToArray());
             var environments = new Dictionary<uint, EnvironmentEntry>();
             for (int i = 0; i < info.NumCells; i++)
             {
@@ -102,7 +91,6 @@ public static class LandBlockLoader
                 }
 
                 envCells.Add(cell.ToEnvCell(env));
-                statics.AddRange(cell.StaticObjects.ToArray());
             }
 
             var shells = new Dictionary<uint, GfxObjEntry>();
@@ -110,7 +98,6 @@ public static class LandBlockLoader
             {
                 if ((b.ModelId >> 24) != 0x01)
                 {
-                    noShell.Add(b);
                     continue;
                 }
 
@@ -123,14 +110,17 @@ public static class LandBlockLoader
 
                 if (gfx.Physics is null)
                 {
-                    noShell.Add(b);
                     continue;
                 }
 
+                // retail: CLandBlock::init_buildings (acclient.c:352113): adjust_to_outside, then this block's land cell
+                uint landCell = block;
                 Vector3 o = b.Frame.Origin;
-                int cx = Math.Clamp((int)MathF.Floor(o.X / LandDefs.CellLength), 0, LandDefs.BlockSide - 1);
-                int cy = Math.Clamp((int)MathF.Floor(o.Y / LandDefs.CellLength), 0, LandDefs.BlockSide - 1);
-                uint landCell = LandDefs.LCoordToGid(lx + cx, ly + cy);
+                if (!LandDefs.AdjustToOutside(ref landCell, ref o) || LandDefs.BlockIdOf(landCell) != block)
+                {
+                    continue;
+                }
+
                 var doors = new BldPortal[b.Portals.Length];
                 for (int p = 0; p < doors.Length; p++)
                 {
@@ -152,11 +142,11 @@ public static class LandBlockLoader
         var placed = new BuildingObj[buildings.Count];
         for (int i = 0; i < buildings.Count; i++)
         {
-            cells.Terrain.GetLandCell(buildings[i].LandCell)!.Building = buildings[i].Building;
+            buildings[i].Building.AddToCell(cells.Terrain.GetLandCell(buildings[i].LandCell)!);
             placed[i] = buildings[i].Building;
         }
 
-        return new LandBlockContent(landBlock, info, envCells.ToArray(), placed, noShell.ToArray(), statics.ToArray());
+        return new LandBlockContent(landBlock, info, envCells.ToArray(), placed);
     }
 
     // An entry whose own id is not the id it was asked for is not that entry.

@@ -188,6 +188,13 @@ public sealed partial class PhysicsObj
     // non-retail: retail never swaps the cells under an object (LScape loads blocks around the viewer before objects arrive)
     internal void RehomeShadows(RetailSweep sweep)
     {
+        if ((_state & PhysicsState.Static) != 0 && HasPartBoxes)
+        {
+            // retail: CLandBlock::init_static_objs (acclient.c:352786) re-lists a loaded block's statics this way
+            CalcCrossCellsStatic(sweep);
+            return;
+        }
+
         IPartArray? parts = PartArray;
         bool hasCyl = parts is IPartCollision pc && pc.CylSpheres.Length != 0;
         if ((State & PhysicsState.HasPhysicsBsp) != 0 || hasCyl)
@@ -234,6 +241,15 @@ public sealed partial class PhysicsObj
     {
         CellArray ca = sweep.CrossCells;
         ca.Clear();
+        if ((State & PhysicsState.HasPhysicsBsp) != 0 && HasPartBoxes)
+        {
+            // An object made from its data id has its parts' boxes: retail's part-based cell list.
+            FindBboxCellList(sweep, ca);
+            RemoveShadowsFromCells();
+            AddShadowsToCells(ca, sweep.Cells.GetVisible(CellId));
+            return;
+        }
+
         Position p = Position;
         IPartCollision? parts = PartArray as IPartCollision;
         ReadOnlySpan<CylSphere> cyl = parts is null ? default : parts.CylSpheres;
@@ -250,7 +266,8 @@ public sealed partial class PhysicsObj
         else
         {
             // Retail: an object with a physics BSP is listed by its parts' bounding boxes (find_bbox_cell_list,
-            // acclient.c:318275, via the cells' part tests); the port uses the sorting sphere for it too (divergences.md).
+            // acclient.c:318275, above, for an object made from its data id); an object whose parts a client gave
+            // (SetPhysicsParts) has no boxes: the sorting sphere stands in (divergences.md).
             Sphere sorting = parts is null ? Sphere.Dummy : parts.SortingSphere;
             spheres[0] = new Sphere(p.LocalToGlobal(p, sorting.Center), sorting.Radius);
             n = 1;

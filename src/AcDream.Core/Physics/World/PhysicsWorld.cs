@@ -237,6 +237,11 @@ public sealed partial class PhysicsWorld
         }
 
         Scene.RemoveFromVisiting(obj);
+        if ((obj.State & (PhysicsState.HasDefaultAnim | PhysicsState.HasDefaultScript)) != 0)
+        {
+            RemoveStaticAnimatingObject(obj);
+        }
+
         _objects.Remove(obj);
         obj.InWorld = false;
         obj.RemovedFromWorld = true;

@@ -47,7 +47,7 @@ public sealed class PhysicsPart
     public ref readonly Position Pos => ref _pos;
 
     /// <summary>The part's scale; the collision uses its z. Retail: <c>gfxobj_scale</c>.</summary>
-    public Vector3 GfxObjScale { get; }
+    public Vector3 GfxObjScale { get; internal set; }
 
     /// <summary>Moves the part.</summary>
     /// <exception cref="ArgumentException">The frame is not finite.</exception>

@@ -3,6 +3,7 @@ using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Collision.Bsp;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Spatial;
+using System.Numerics;
 
 namespace AcDream.Core.Physics.Objects.Parts;
 
@@ -75,7 +76,31 @@ public sealed partial class SimplePartArray : IPartCollision
             parts[i] = new PhysicsPart(gfxObjs[i], new Position(CellId, Frame.Combined(Frame, localFrames[i])), scales[i]);
         }
 
-        (_extras ??= new CollisionExtras()).Bsp = new BspParts(parts, localFrames.ToArray());
+        (_extras ??= new CollisionExtras()).Bsp = new BspParts(parts, localFrames.ToArray(), scales.ToArray());
+        if (Scale != 1f)
+        {
+            ScaleBspParts(Scale);
+        }
+    }
+
+    // Each BSP part's scale: the object's scale times the part's default scale, in retail's order (z, y, then x).
+    // retail: CPartArray::SetScaleInternal (acclient.c:326181), the part loop
+    private void ScaleBspParts(float scale)
+    {
+        BspParts? bsp = _extras?.Bsp;
+        if (bsp is null)
+        {
+            return;
+        }
+
+        for (int i = 0; i < bsp.Parts.Length; i++)
+        {
+            Vector3 d = bsp.DefaultScales[i];
+            float z = d.Z * scale;
+            float y = d.Y * scale;
+            float x = d.X * scale;
+            bsp.Parts[i].GfxObjScale = new Vector3(x, y, z);
+        }
     }
 
     /// <summary>Replaces the cylinder spheres (a setup's list; object-local, unscaled).</summary>
@@ -136,11 +161,26 @@ public sealed partial class SimplePartArray : IPartCollision
         }
 
         PhysicsPart part = bsp.Parts[index];
-        part.SetPosition(new Position(CellId, Frame.Combined(Frame, bsp.Frames[index])));
+        part.SetPosition(new Position(CellId, PartFrame(bsp.Frames[index])));
         return part.FindObjCollisions(transition);
     }
 
-    private sealed record BspParts(PhysicsPart[] Parts, Frame[] Frames);
+    // The object's frame combined with a part's local frame, its origin scaled by the object's scale (retail
+    // CPartArray::UpdateParts scales each part's origin; at scale 1 the product is the origin itself).
+    private Frame PartFrame(in Frame local)
+    {
+        if (Scale == 1f)
+        {
+            return Frame.Combined(Frame, local);
+        }
+
+        Frame scaled = local;
+        Vector3 o = local.Origin;
+        scaled.Origin = new Vector3(o.X * Scale, o.Y * Scale, o.Z * Scale);
+        return Frame.Combined(Frame, scaled);
+    }
+
+    private sealed record BspParts(PhysicsPart[] Parts, Frame[] Frames, Vector3[] DefaultScales);
 
     private sealed class CollisionExtras
     {

@@ -276,6 +276,7 @@ public sealed partial class SimplePartArray : IPartArray
     {
         InputLimits.ThrowIfScaleOutside(scale, nameof(scale));
         Scale = scale;
+        ScaleBspParts(scale);
     }
 
     /// <inheritdoc />
