@@ -27,8 +27,9 @@ public class GfxObjDegradeInfoEntryTests
         byte[] bytes = WorldEntries.DegradeInfo(0x11000005, (0x01000001, 1));
         var e = Assert.Throws<RetailDataFormatException>(() => GfxObjDegradeInfoEntry.UnPack(bytes.AsSpan(0, 20)));
         Assert.Equal("GfxObjDegradeInfo", e.Structure);
-        // The count says one level of 20 bytes, but only 12 remain after it (offset 8).
-        Assert.Equal(8, e.Offset);
+        // The count (the u32 at offset 4, after the id) says one level of 20 bytes, but only 12 remain after it: the error
+        // names the count's own offset (issue #33: a format error points at the bad field, not past it).
+        Assert.Equal(4, e.Offset);
     }
 
     [Fact]
