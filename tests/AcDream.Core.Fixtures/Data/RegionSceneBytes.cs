@@ -28,7 +28,8 @@ internal sealed record RegionDef(
     int SoundTables = 2,
     bool ScenePart = true,
     uint ExtraMask = 0,
-    byte[]? Tail = null);
+    byte[]? Tail = null,
+    uint SkyReplaceIndex = 1);
 
 /// <summary>
 /// Writes region (0x13…) and scene (0x12…) entries in retail's byte layouts, field by field in the order the decompiled
@@ -111,7 +112,7 @@ internal static class RegionSceneBytes
         w.UInt32(mask);
         if (def.Sky)
         {
-            Sky(w);
+            Sky(w, def.SkyReplaceIndex);
         }
 
         if (def.SoundTables > 0)
@@ -182,8 +183,8 @@ internal static class RegionSceneBytes
     }
 
     /// <summary>The sky (<c>SkyDesc::UnPack</c>, acclient.c:302821): two tick sizes (f64), one day group (chance, name, two
-    /// sky objects of nine words, one sky time of eleven words with one replacement of six words naming sky object 1).</summary>
-    private static void Sky(RetailDataWriter w)
+    /// sky objects of nine words, one sky time of eleven words with one replacement of six words naming a sky object).</summary>
+    private static void Sky(RetailDataWriter w, uint replaceIndex)
     {
         w.Int32(0).Int32(0x3FF00000).Int32(0).Int32(0x3FF00000).UInt32(1);
         w.Single(1f);
@@ -200,6 +201,6 @@ internal static class RegionSceneBytes
             w.UInt32((uint)(100 + i));
         }
 
-        w.UInt32(1).UInt32(1).UInt32(0x01000001).Single(0f).Single(0f).Single(1f).Single(1f);
+        w.UInt32(1).UInt32(replaceIndex).UInt32(0x01000001).Single(0f).Single(0f).Single(1f).Single(1f);
     }
 }
