@@ -88,11 +88,11 @@ public class ObjectPlacementTests
     }
 
     [Theory]
-    [InlineData(0.6f, 0f, 270.0)]  // downhill to the west
-    [InlineData(0f, 0.6f, 180.0)]  // downhill to the south
-    [InlineData(-0.6f, 0f, 90.0)]  // downhill to the east
+    [InlineData(0.6f, 0f, 270.0)]  // the normal leans east (downhill): -N, uphill, is west
+    [InlineData(0f, 0.6f, 180.0)]  // leans north: faces south
+    [InlineData(-0.6f, 0f, 90.0)]  // leans west: faces east
     [InlineData(0f, 0f, 0.0)]      // flat: no heading (get_heading of a short vector is 0)
-    public void ObjAlign_FacesDownhill_WithoutTilt(float nx, float ny, double heading)
+    public void ObjAlign_FacesMinusN_Uphill_WithoutTilt(float nx, float ny, double heading)
     {
         var plane = new CollisionPlane { N = new Vector3(nx, ny, MathF.Sqrt(1f - nx * nx - ny * ny)), D = 0f };
         Frame f = ObjectPlacement.ObjAlign(Spot(Vector3.Zero, align: 1), plane, new Vector3(5f, 6f, 7f));

@@ -18,7 +18,7 @@ namespace AcDream.Core.Physics.Data;
 /// <param name="MaxRotation">The largest random heading, degrees (0 or less: the base frame's). Retail: <c>max_rot</c>.</param>
 /// <param name="MinSlope">The smallest terrain normal z (a cosine) the spot accepts. Retail: <c>min_slope</c>.</param>
 /// <param name="MaxSlope">The largest terrain normal z (a cosine) the spot accepts. Retail: <c>max_slope</c>.</param>
-/// <param name="Align">Non-zero: the object faces downhill instead of a random heading. Retail: <c>align</c>.</param>
+/// <param name="Align">Non-zero: the object faces the heading of the terrain's <c>−N</c> (uphill) instead of a random heading. Retail: <c>align</c>.</param>
 /// <param name="Orient">Stored but read by nothing in retail. Retail: <c>orient</c>.</param>
 /// <param name="WeenieObj">Non-zero: a spot the server fills (an encounter); the client never makes it. Retail:
 /// <c>weenie_obj</c>.</param>

@@ -72,8 +72,8 @@ public static class ObjectPlacement
 
     /// <summary>
     /// The frame of an aligned spot at <paramref name="loc"/>: the base frame with its origin moved there, turned to the
-    /// heading of the terrain's downhill direction <c>−N</c> taken in x and y only (a heading, no tilt onto the slope; a flat
-    /// triangle gives heading 0).
+    /// heading of <c>−N</c> taken in x and y only: the terrain's uphill direction (a slope's normal leans downhill). A
+    /// heading, no tilt onto the slope; a flat triangle gives heading 0.
     /// </summary>
     /// <exception cref="ArgumentNullException"><paramref name="desc"/> is null.</exception>
     // retail: ObjectDesc::ObjAlign (acclient.c:462707)
