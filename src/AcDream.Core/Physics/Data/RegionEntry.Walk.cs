@@ -25,8 +25,7 @@ public sealed partial class RegionEntry
         int days = r.ReadCount("week day count", 4);
         for (int i = 0; i < days; i++)
         {
-            // retail: WeekDay::UnPack (acclient.c:463919): the day's name.
-            ReadPString(ref r, "week day name", keep: false);
+            WalkWeekDay(ref r);
         }
 
         int seasons = r.ReadCount("season count", 8);
@@ -35,6 +34,10 @@ public sealed partial class RegionEntry
             WalkSeason(ref r);
         }
     }
+
+    /// <summary>A week day: its name.</summary>
+    // retail: WeekDay::UnPack (acclient.c:463919)
+    private static void WalkWeekDay(ref RetailDataReader r) => ReadPString(ref r, "week day name", keep: false);
 
     /// <summary>A time of day: its start (f32), the night flag, its name.</summary>
     // retail: TimeOfDay::UnPack (acclient.c:463951)
@@ -74,14 +77,26 @@ public sealed partial class RegionEntry
         r.Skip(4, "day group chance");
         ReadPString(ref r, "day group name", keep: false);
         int objects = r.ReadCount("sky object count", SkyObjectSize);
-        // retail: SkyObject::UnPack (acclient.c:301788): begin and end time, begin and end angle, texture velocity x and y,
-        // default GfxObj, default particle emitter, properties.
-        r.Skip(objects * SkyObjectSize, "sky objects");
+        for (int i = 0; i < objects; i++)
+        {
+            WalkSkyObject(ref r);
+        }
+
+        r.Structure = "DayGroup";
         int times = r.ReadCount("sky time of day count", SkyTimeOfDaySize + 4);
         for (int i = 0; i < times; i++)
         {
             WalkSkyTimeOfDay(ref r, objects);
         }
+    }
+
+    /// <summary>A sky object: begin and end time, begin and end angle, texture velocity x and y, default GfxObj, default
+    /// particle emitter, properties (nine words).</summary>
+    // retail: SkyObject::UnPack (acclient.c:301788)
+    private static void WalkSkyObject(ref RetailDataReader r)
+    {
+        r.Structure = "SkyObject";
+        r.Skip(SkyObjectSize, "sky object");
     }
 
     private const int SkyObjectSize = 9 * 4;
@@ -96,20 +111,27 @@ public sealed partial class RegionEntry
         r.Structure = "SkyTimeOfDay";
         r.Skip(SkyTimeOfDaySize, "sky time of day");
         int replaces = r.ReadCount("sky object replacement count", SkyObjectReplaceSize);
-        r.Structure = "SkyObjectReplace";
         for (int i = 0; i < replaces; i++)
         {
-            // retail: SkyObjectReplace::UnPack (acclient.c:301922): object index, GfxObj, rotation, transparency,
-            // luminosity, max brightness. DayGroup::UnPack then reads sky_objects[object index] (acclient.c:302641).
-            int at = r.Offset;
-            uint index = r.ReadUInt32("sky object index");
-            if (index >= (uint)skyObjects)
-            {
-                throw r.ErrorAt(at, $"sky object index {index} is past the day group's {skyObjects} sky objects");
-            }
-
-            r.Skip(SkyObjectReplaceSize - 4, "sky object replacement");
+            WalkSkyObjectReplace(ref r, skyObjects);
         }
+    }
+
+    /// <summary>A sky object replacement: object index, GfxObj, rotation, transparency, luminosity, max brightness.
+    /// <c>DayGroup::UnPack</c> then reads <c>sky_objects[object index]</c> (acclient.c:302641), so the index must name one
+    /// of the day group's sky objects.</summary>
+    // retail: SkyObjectReplace::UnPack (acclient.c:301922)
+    private static void WalkSkyObjectReplace(ref RetailDataReader r, int skyObjects)
+    {
+        r.Structure = "SkyObjectReplace";
+        int at = r.Offset;
+        uint index = r.ReadUInt32("sky object index");
+        if (index >= (uint)skyObjects)
+        {
+            throw r.ErrorAt(at, $"sky object index {index} is past the day group's {skyObjects} sky objects");
+        }
+
+        r.Skip(SkyObjectReplaceSize - 4, "sky object replacement");
     }
 
     /// <summary>The ambient sound tables: a count, then each table. Returns the count.</summary>
@@ -118,16 +140,22 @@ public sealed partial class RegionEntry
     {
         r.Structure = "CSoundDesc";
         int tables = r.ReadCount("sound table count", 8);
-        r.Structure = "AmbientSTBDesc";
         for (int i = 0; i < tables; i++)
         {
-            // retail: AmbientSTBDesc::UnPack (acclient.c:384534): the sound table id, a count, then per ambient sound its
-            // type, volume, base chance, min and max rate.
-            r.Skip(4, "sound table id");
-            int sounds = r.ReadCount("ambient sound count", 5 * 4);
-            r.Skip(sounds * 5 * 4, "ambient sounds");
+            WalkAmbientStbDesc(ref r);
         }
 
         return tables;
+    }
+
+    /// <summary>An ambient sound table: its id, a count, then per ambient sound its type, volume, base chance, min and max
+    /// rate.</summary>
+    // retail: AmbientSTBDesc::UnPack (acclient.c:384534)
+    private static void WalkAmbientStbDesc(ref RetailDataReader r)
+    {
+        r.Structure = "AmbientSTBDesc";
+        r.Skip(4, "sound table id");
+        int sounds = r.ReadCount("ambient sound count", 5 * 4);
+        r.Skip(sounds * 5 * 4, "ambient sounds");
     }
 }

@@ -138,6 +138,15 @@ public static partial class SceneryGenerator
         }
     }
 
+    /// <summary>The outdoor cell holding block-local <paramref name="origin"/> of block <paramref name="blockId"/>; 0 past
+    /// the world's edge.</summary>
+    // retail: Position::get_outside_cell_id (acclient.c:143773)
+    private static uint OutsideCellId(uint blockId, Vector3 origin)
+    {
+        uint cellId = blockId;
+        return LandDefs.AdjustToOutside(ref cellId, ref origin) ? cellId : 0u;
+    }
+
     // The loop over one scene's objects at vertex (i, j) of get_land_scenes (acclient.c:352529).
     private static void PlaceScene(LandBlock block, SceneEntry scene, uint x, uint y, int i, int j,
         Func<uint, bool>? cellHasBuilding, List<ScenePlacement> placements)
@@ -161,10 +170,8 @@ public static partial class SceneryGenerator
                 continue;
             }
 
-            // retail: Position::get_outside_cell_id (acclient.c:143773) of (block id, v), then CLandBlock::get_landcell.
-            uint cellId = block.Id;
-            Vector3 loc = v;
-            LandCell? cell = LandDefs.AdjustToOutside(ref cellId, ref loc) ? block.GetLandCell(cellId) : null;
+            uint cellId = OutsideCellId(block.Id, v);
+            LandCell? cell = cellId != 0 ? block.GetLandCell(cellId) : null;
             if (cell is null || cellHasBuilding?.Invoke(cellId) == true
                 || !cell.FindTerrainPoly(v, out Polygon? walkable) || !ObjectPlacement.CheckSlope(desc, walkable.Plane.N.Z))
             {
