@@ -14,7 +14,7 @@ namespace AcDream.Core.Tests.Api;
 /// The layers table of docs/architecture.md is the library's: each layer imports only what its "may import" column lists,
 /// read from the compiled code and from the using directives (<see cref="LayerImports"/>), as <see cref="PublicSurfaceTests"/>
 /// checks the surface table. The bottom stays at the bottom: <c>Spatial</c> imports nothing of the library, the byte reader
-/// (<c>Format</c>) only <c>Spatial</c>, only the world door (<c>WorldData</c>) imports the loaders (<c>Data</c>), and nothing imports the door or the input
+/// (<c>Format</c>) only <c>Spatial</c>, only the world door (<c>WorldData</c>) and the scenery above the loaders (<c>Scenery</c>) import the loaders (<c>Data</c>), and nothing imports the door or the input
 /// (<c>Input</c>).
 /// </summary>
 public sealed partial class LayeringTests
@@ -94,8 +94,9 @@ public sealed partial class LayeringTests
         Assert.Equal(["Spatial"], table["Format"]);
         foreach ((string layer, SortedSet<string> allowed) in table)
         {
-            // The world door (WorldData) sits on top of the loaders; nothing imports the door.
-            if (layer != "WorldData")
+            // The world door (WorldData) and the scenery (pure functions over the region and scene entries) sit on top of
+            // the loaders; nothing imports the door.
+            if (layer != "WorldData" && layer != "Scenery")
             {
                 Assert.DoesNotContain("Data", allowed);
             }
@@ -103,6 +104,8 @@ public sealed partial class LayeringTests
             Assert.DoesNotContain("Input", allowed);
             Assert.DoesNotContain("WorldData", allowed);
         }
+
+        Assert.DoesNotContain("Scenery", table["Data"]);
 
         // Below the cycle: neither Spatial nor Format can reach a layer that reaches back to it.
         foreach (string bottom in new[] { "Spatial", "Format" })
