@@ -21,7 +21,10 @@ internal static class SceneryScene
     public const uint SingleScene = 0x12000010;
     public static readonly uint[] TripleScenes = [0x12000020, 0x12000021, 0x12000022];
 
-    public static RegionEntry Region() => RegionEntry.UnPack(RegionSceneBytes.Region(new RegionDef(
+    public static RegionEntry Region() => RegionEntry.UnPack(RegionBytes());
+
+    /// <summary>The region's bytes (see <see cref="Region"/>), for a data source.</summary>
+    public static byte[] RegionBytes() => RegionSceneBytes.Region(new RegionDef(
         SceneTypes: [new SceneTypeDef(-1, [SingleScene]), new SceneTypeDef(-1, TripleScenes)],
         TerrainTypes:
         [
@@ -29,7 +32,7 @@ internal static class SceneryScene
             new TerrainTypeDef("Grassland", 0, [-1, 0, 1]),
         ],
         Sky: false,
-        SoundTables: 0)));
+        SoundTables: 0));
 
     /// <summary>The terrain word of type <paramref name="type"/>, scene slot <paramref name="slot"/>, road bits
     /// <paramref name="road"/>.</summary>

@@ -31,6 +31,7 @@ public sealed partial class WorldLoader
     /// <exception cref="ArgumentNullException">An argument is null.</exception>
     /// <exception cref="ArgumentException">The world does not sweep with a <see cref="RetailSweep"/> over
     /// <see cref="WorldCells"/>.</exception>
+    /// <exception cref="RetailDataFormatException">The source's region entry (<see cref="DerethRegionId"/>) has bad bytes.</exception>
     public WorldLoader(PhysicsWorld world, IRetailDataSource source)
     {
         ArgumentNullException.ThrowIfNull(world);
@@ -45,6 +46,7 @@ public sealed partial class WorldLoader
         _sweep = sweep;
         _source = source;
         Objects = new ObjectFactory(source);
+        Region = ReadRegion(source);
     }
 
     /// <summary>The factory the door makes objects with (a client makes creatures and items with it too).</summary>
@@ -56,8 +58,8 @@ public sealed partial class WorldLoader
     /// <summary>The blocks loaded by this door, by id.</summary>
     public IReadOnlyCollection<uint> LoadedBlockIds => _blocks.Keys;
 
-    /// <summary>The scenery of a block (retail <c>get_land_scenes</c> up to <c>makeObject</c>), or null for none: the seam
-    /// the procedural scenery placement plugs into.</summary>
+    /// <summary>The scenery of a block (retail <c>get_land_scenes</c> up to <c>makeObject</c>), or null for none: a test seam
+    /// that replaces the region's placement (<see cref="Region"/>).</summary>
     internal Func<uint, LandBlock, IReadOnlyList<SceneryItem>>? ScenerySource { get; set; }
 
     /// <summary>
@@ -212,7 +214,9 @@ public sealed partial class WorldLoader
             }
         }
 
-        IReadOnlyList<SceneryItem> scenery = ScenerySource?.Invoke(block, landBlock) ?? Array.Empty<SceneryItem>();
+        IReadOnlyList<SceneryItem> scenery = ScenerySource is not null
+            ? ScenerySource(block, landBlock) ?? Array.Empty<SceneryItem>()
+            : RegionScenery(block, landBlock, info);
         foreach (SceneryItem s in scenery)
         {
             // non-retail: a placement outside the library's domains is refused before the world changes
