@@ -96,8 +96,10 @@ public sealed class ActionList
     }
 
     /// <summary>Replaces the contents with a copy of <paramref name="other"/>'s.</summary>
+    /// <exception cref="System.ArgumentNullException"><paramref name="other"/> is null.</exception>
     public void CopyFrom(ActionList other)
     {
+        System.ArgumentNullException.ThrowIfNull(other);
         if (ReferenceEquals(this, other))
         {
             return;

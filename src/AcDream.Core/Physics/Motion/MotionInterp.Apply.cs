@@ -13,6 +13,10 @@ public sealed partial class MotionInterp
     /// speed; then, with the run key (the given one, or the raw state's when <see cref="HoldKey.Invalid"/>),
     /// <see cref="ApplyRunToCommand"/>. A run forward is left alone.
     /// </summary>
+    /// <param name="motion">The command, converted in place.</param>
+    /// <param name="speed">Its speed, converted in place: any float (a pure conversion; nothing is stored, so there is no
+    /// domain to check; a speed handed on to the interpreter's entries must be within ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/>).</param>
+    /// <param name="key">The hold key; <see cref="HoldKey.Invalid"/> takes the raw state's.</param>
     // retail: CMotionInterp::adjust_motion (acclient.c:343745)
     public void AdjustMotion(ref MotionCommand motion, ref float speed, HoldKey key)
     {
@@ -56,6 +60,8 @@ public sealed partial class MotionInterp
 
     /// <summary>Applies the run key: a walk forward (at positive speed) becomes a run, every walk speed is multiplied by
     /// the run rate; a turn is 1.5 times faster; a side-step is multiplied by the run rate and clamped to ±3.</summary>
+    /// <param name="motion">The command, converted in place.</param>
+    /// <param name="speed">Its speed, converted in place: any float (a pure conversion; nothing is stored).</param>
     // retail: CMotionInterp::apply_run_to_command (acclient.c:343438)
     public void ApplyRunToCommand(ref MotionCommand motion, ref float speed)
     {

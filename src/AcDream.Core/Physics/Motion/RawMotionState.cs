@@ -85,9 +85,11 @@ public sealed class RawMotionState
     }
 
     /// <summary>Copies everything, the actions included.</summary>
+    /// <exception cref="System.ArgumentNullException"><paramref name="rhs"/> is null.</exception>
     // retail: RawMotionState::operator= (acclient.c:332923)
     public void CopyFrom(RawMotionState rhs)
     {
+        System.ArgumentNullException.ThrowIfNull(rhs);
         CurrentHoldKey = rhs.CurrentHoldKey;
         CurrentStyle = rhs.CurrentStyle;
         ForwardCommand = rhs.ForwardCommand;

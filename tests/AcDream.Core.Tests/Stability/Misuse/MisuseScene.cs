@@ -1,5 +1,7 @@
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Sweep;
+using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Motion.Wire;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
@@ -12,7 +14,9 @@ namespace AcDream.Core.Tests.Stability.Misuse;
 /// <summary>
 /// The misuse suite's small scene: flat terrain (landblock 0x8080 at height index 10, the one-metre table: z = 10 m), the retail
 /// sweep, a walker at (100, 100) (one 0.5 m sphere, a movement manager, walking 1 m/s, the player) with every position manager in
-/// use, a resting second object 3 m east, a dormant third object (no movement manager) 6 m west, and a fade in progress. Built fresh for every case.
+/// use, a resting second object 3 m east, a dormant third object (no movement manager) 6 m west, a fade in progress, and a
+/// remote creature 6 m north with retail's movement manager and motion interpreter (run rate 1.5 from a MovementEvent's
+/// state), running a move-to towards the second object. Built fresh for every case.
 /// </summary>
 internal sealed class MisuseScene
 {
@@ -37,6 +41,15 @@ internal sealed class MisuseScene
         Walker.InterpolateTo(At(100f, 102f), false);
         Walker.ConstrainTo(Walker.Position, 10f, 50f);
         Walker.PositionManager!.StickTo(2u, 0.5f, 1.8f);
+        Creature = World.CreateObject(4);
+        Creature.Weenie = RemoteCreatureWeenie.Creature;
+        SimplePartArray creatureParts = Support.Shared.Walkers.OneSphere();
+        creatureParts.MotionPlayer = new SpeedOnlyMotionPlayer();
+        Creature.PartArray = creatureParts;
+        Creature.EnterWorld(At(100f, 106f));
+        MovementEvent.ApplyInterpretedMotion(Creature,
+            new InterpretedMotionState { ForwardCommand = MotionCommand.RunForward, ForwardSpeed = 1.5f });
+        Creature.MoveToObject(2u, new MovementParameters());
         Tick(4);
     }
 
@@ -54,6 +67,10 @@ internal sealed class MisuseScene
 
     /// <summary>A resting object with no movement manager, 6 m west of the walker: dormant once the scene has seen it idle.</summary>
     public PhysicsObj Resting { get; }
+
+    /// <summary>A remote creature with retail's movement manager (and interpreter), running a move-to towards
+    /// <see cref="Other"/>: the motion members of the object, and the static MovementEvent entry, are called on it.</summary>
+    public PhysicsObj Creature { get; }
 
     /// <summary>A position on the ground (z = 10 m) of landblock 0x8080 at (x, y), in the outdoor cell that contains it.</summary>
     public static Position At(float x, float y)

@@ -51,6 +51,17 @@ internal static class MutatorCatalog
 
     private static readonly Assembly Library = typeof(PhysicsWorld).Assembly;
 
+    /// <summary>The object's members that reach its movement manager: also called on the scene's creature, which has retail's
+    /// movement manager and interpreter (on the walker, whose manager is a client's own, they answer without moving).</summary>
+    private static readonly HashSet<string> MotionMembers = new(StringComparer.Ordinal)
+    {
+        "HandleMovementEvent", "DoMotion", "StopMotion", "MoveToObject", "TurnToObject", "TurnToHeading", "StopCompletely",
+        "StickToObject", "SetPosition", "MoveOrTeleport", "HandleUpdateTarget", "MakeMovementManager",
+    };
+
+    /// <summary>Static entry points of the library, called with the scene's creature as their object argument.</summary>
+    private static readonly Type[] StaticEntries = [typeof(AcDream.Core.Physics.Motion.Wire.MovementEvent)];
+
     /// <summary>The member's name in the catalog.</summary>
     public static string Name(MethodInfo m) =>
         m.ReflectedType!.Name + "." + m.Name + "(" + string.Join(", ", m.GetParameters().Select(p => ParamType(p).Name)) + ")";
@@ -91,6 +102,21 @@ internal static class MutatorCatalog
                 {
                     // The object's members are also called on the dormant object: a refusal must not even wake it.
                     list.Add((m, "resting"));
+                    if (MotionMembers.Contains(m.Name))
+                    {
+                        list.Add((m, "creature"));
+                    }
+                }
+            }
+        }
+
+        foreach (Type t in StaticEntries)
+        {
+            foreach (MethodInfo m in t.GetMethods(BindingFlags.Public | BindingFlags.Static))
+            {
+                if (m.DeclaringType == t && !m.IsGenericMethodDefinition)
+                {
+                    list.Add((m, "static"));
                 }
             }
         }
@@ -99,11 +125,21 @@ internal static class MutatorCatalog
     }
 
     /// <summary>The instance at <paramref name="path"/> in scene <paramref name="s"/>.</summary>
-    public static object Resolve(MisuseScene s, string path)
+    public static object? Resolve(MisuseScene s, string path)
     {
         if (path == "resting")
         {
             return s.Resting;
+        }
+
+        if (path == "creature")
+        {
+            return s.Creature;
+        }
+
+        if (path == "static")
+        {
+            return null!;
         }
 
         foreach ((object o, string p) in PublicState.Capture(s).Objects)
