@@ -211,4 +211,50 @@ public class RunRateAndSpeedDomainTests
         Assert.Contains("run rate", Assert.Throws<RetailDataFormatException>(() => MovementEventDecoder.Decode(body, m)).Reason,
             StringComparison.Ordinal);
     }
+    private sealed class NegativeRateWeenie : IMotionWeenie
+    {
+        public bool IsThePlayer => false;
+        public bool IsCreature => true;
+        public bool IsPlayer => false;
+        public bool IsImpenetrable => false;
+        public bool IsPK => false;
+        public bool IsPKLite => false;
+
+        public bool InqRunRate(out float rate)
+        {
+            rate = -1f;
+            return true;
+        }
+
+        public bool InqJumpVelocity(float extent, out float vz)
+        {
+            vz = float.NaN;
+            return true;
+        }
+
+        public bool CanJump(float extent) => true;
+
+        public bool JumpStaminaCost(float extent, out int cost)
+        {
+            cost = 0;
+            return true;
+        }
+    }
+
+    [Fact]
+    public void AClientsWeenieWithANegativeRate_LeavingTheGround_DoesNotThrow_AndKeepsTheVelocity()
+    {
+        // The one source of a non-finite leave-ground velocity the domains cannot refuse: a client's own weenie (rate −1: a
+        // standing object's state velocity 0 / 0; jump velocity NaN). The velocity is not applied; SetPosition does not throw.
+        PhysicsWorld world = MoveToScene.FlatWorld();
+        PhysicsObj obj = MoveToScene.Creature(world, 5, new NegativeRateWeenie(), new Vector3(100f, 100f, 20f));
+        MovementManager.Of(obj);
+        SweepScene.Run(world, 2);
+        Position up = obj.Position;
+        up.Frame.Origin += new Vector3(0f, 0f, 5f);
+        Assert.Equal(SetPositionError.Ok, obj.SetPosition(up, SetPositionFlags.Placement));
+        Assert.Equal(Vector3.Zero, obj.Velocity);
+        SweepScene.Run(world, 10);
+        Assert.True(float.IsFinite(obj.Position.Frame.Origin.Z));
+    }
 }
