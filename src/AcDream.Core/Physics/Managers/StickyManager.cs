@@ -42,6 +42,16 @@ public sealed class StickyManager
     /// (acclient.c:317420).</summary>
     public const MotionError UnstickMoveToError = MotionError.ActionCancelled;
 
+    /// <summary>
+    /// Longest step a stick takes in one substep, metres: 100 (non-retail). Retail's step is the gap to the standoff point
+    /// or 5 × max speed × quantum, whichever is shorter, with no bound: a target radius of 300 m (its Setup's) and a run
+    /// rate of 50 gave a 200 m step, which the sweep refuses (longer than 192 m), and the tick threw. With the physics
+    /// step's at most 30 m (<see cref="InputLimits.MaxAcceleration"/>) a substep then moves at most 130 m. A real stick
+    /// steps far less: at retail's largest run rates (about 4.5) 5 × 18 m/s × 0.2 s = 18 m, and the gap is under a metre.
+    /// A longer step is shortened along its direction.
+    /// </summary>
+    public const float MaxStep = 100f;
+
     // retail: StickyManager::Create (acclient.c:388727)
     internal StickyManager(PhysicsObj physicsObj)
     {
@@ -69,7 +79,8 @@ public sealed class StickyManager
 
     /// <summary>
     /// Replaces the offset's origin by a horizontal step (in local axes) towards the standoff point, at most
-    /// 5 × max speed × quantum (15 m/s when the speed is unknown), and its heading by the turn that faces the target.
+    /// 5 × max speed × quantum (15 m/s when the speed is unknown) and at most <see cref="MaxStep"/>, and its heading by the
+    /// turn that faces the target.
     /// </summary>
     /// <param name="offset">The substep's offset frame.</param>
     /// <param name="quantum">Substep duration, seconds.</param>
@@ -128,6 +139,13 @@ public sealed class StickyManager
         }
 
         o.Z = (float)(step * o.Z);
+        // non-retail: the step's length bounded (see MaxStep); retail's is 5 × max speed × quantum or the gap, unbounded
+        if (Math.Abs(step) > MaxStep)
+        {
+            double k = MaxStep / Math.Abs(step);
+            o = new Vector3((float)(o.X * k), (float)(o.Y * k), (float)(o.Z * k));
+        }
+
         offset.Origin = o;
 
         float toTarget = (float)body.HeadingTo(targetPos);

@@ -51,8 +51,18 @@ public sealed class ActionList
     }
 
     /// <summary>Appends an action at the tail (ignored when the list is full).</summary>
+    /// <exception cref="System.ArgumentException">The action's speed is NaN, infinite or beyond
+    /// ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (the list unchanged): an action is played at its speed when the
+    /// state is applied, after the state's movement, so a bad speed must be refused here, where it enters.</exception>
     public void Add(in ActionNode node)
     {
+        // non-retail: the action speed's domain (see InputLimits.MaxMotionSpeed)
+        if (!MotionChecks.IsSpeedInDomain(node.Speed))
+        {
+            throw new System.ArgumentException(
+                $"An action's speed must be finite and within ±{Spatial.InputLimits.MaxMotionSpeed} (got {node.Speed}).", nameof(node));
+        }
+
         // non-retail: a bounded list (retail allocates a node per action)
         if (Count == Capacity)
         {
@@ -86,8 +96,10 @@ public sealed class ActionList
     }
 
     /// <summary>Replaces the contents with a copy of <paramref name="other"/>'s.</summary>
+    /// <exception cref="System.ArgumentNullException"><paramref name="other"/> is null.</exception>
     public void CopyFrom(ActionList other)
     {
+        System.ArgumentNullException.ThrowIfNull(other);
         if (ReferenceEquals(this, other))
         {
             return;

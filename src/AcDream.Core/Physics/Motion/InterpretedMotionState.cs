@@ -19,11 +19,12 @@ public sealed class InterpretedMotionState
     public MotionCommand ForwardCommand { get; set; }
 
     /// <summary>Speed of <see cref="ForwardCommand"/> (negative for backwards; the run rate when running).</summary>
-    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="System.ArgumentException">The value is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/>
+    /// (state unchanged). The interpreter's own state may hold more (a run is the walk speed times the run rate).</exception>
     public float ForwardSpeed
     {
         get => _forwardSpeed;
-        set => _forwardSpeed = MotionChecks.Finite(value);
+        set => _forwardSpeed = MotionChecks.Speed(value);
     }
 
     private float _forwardSpeed;
@@ -32,11 +33,12 @@ public sealed class InterpretedMotionState
     public MotionCommand SidestepCommand { get; set; }
 
     /// <summary>Speed of the side-step (negative is left).</summary>
-    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="System.ArgumentException">The value is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/>
+    /// (state unchanged). The interpreter's own state may hold more (a run is the walk speed times the run rate).</exception>
     public float SidestepSpeed
     {
         get => _sidestepSpeed;
-        set => _sidestepSpeed = MotionChecks.Finite(value);
+        set => _sidestepSpeed = MotionChecks.Speed(value);
     }
 
     private float _sidestepSpeed;
@@ -45,14 +47,23 @@ public sealed class InterpretedMotionState
     public MotionCommand TurnCommand { get; set; }
 
     /// <summary>Speed of the turn (negative is left).</summary>
-    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="System.ArgumentException">The value is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/>
+    /// (state unchanged). The interpreter's own state may hold more (a run is the walk speed times the run rate).</exception>
     public float TurnSpeed
     {
         get => _turnSpeed;
-        set => _turnSpeed = MotionChecks.Finite(value);
+        set => _turnSpeed = MotionChecks.Speed(value);
     }
 
     private float _turnSpeed;
+
+    /// <summary>The three speeds as the interpreter's conversions give them (<c>apply_raw_movement</c>), unchecked.</summary>
+    internal void SetSpeedsInternal(float forward, float sidestep, float turn)
+    {
+        _forwardSpeed = forward;
+        _sidestepSpeed = sidestep;
+        _turnSpeed = turn;
+    }
 
     /// <summary>The queued actions; their number, <see cref="ActionList.Count"/>, is retail's
     /// <c>InterpretedMotionState::GetNumActions</c>.</summary>
@@ -72,19 +83,23 @@ public sealed class InterpretedMotionState
     }
 
     /// <summary>Copies the style, the three commands and their speeds (not the actions).</summary>
+    /// <exception cref="System.ArgumentNullException"><paramref name="rhs"/> is null.</exception>
     // retail: InterpretedMotionState::copy_movement_from (acclient.c:332524)
     public void CopyMovementFrom(InterpretedMotionState rhs)
     {
+        System.ArgumentNullException.ThrowIfNull(rhs);
+        // The fields, not the setters: a state's own speeds always copy (the interpreter's may exceed MaxMotionSpeed).
         CurrentStyle = rhs.CurrentStyle;
         ForwardCommand = rhs.ForwardCommand;
-        ForwardSpeed = rhs.ForwardSpeed;
+        _forwardSpeed = rhs._forwardSpeed;
         SidestepCommand = rhs.SidestepCommand;
-        SidestepSpeed = rhs.SidestepSpeed;
+        _sidestepSpeed = rhs._sidestepSpeed;
         TurnCommand = rhs.TurnCommand;
-        TurnSpeed = rhs.TurnSpeed;
+        _turnSpeed = rhs._turnSpeed;
     }
 
     /// <summary>Copies everything, the actions included.</summary>
+    /// <exception cref="System.ArgumentNullException"><paramref name="rhs"/> is null.</exception>
     // retail: InterpretedMotionState::operator= (acclient.c:332682)
     public void CopyFrom(InterpretedMotionState rhs)
     {
@@ -94,25 +109,33 @@ public sealed class InterpretedMotionState
 
     /// <summary>Records a started motion: turn, side-step, substate, style or action.</summary>
     /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed
-    /// is NaN or infinite (state unchanged).</exception>
+    /// is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (state unchanged).</exception>
     // retail: InterpretedMotionState::ApplyMotion (acclient.c:332758)
     public void ApplyMotion(MotionCommand motion, in MovementParameters p)
     {
         MotionChecks.Check(p);
+        ApplyMotionInternal(motion, p);
+    }
+
+    // The body of ApplyMotion, for the interpreter: its speeds are its own conversions of checked ones (a run's may exceed
+    // MaxMotionSpeed), so they are stored without the setters' check.
+    // retail: InterpretedMotionState::ApplyMotion (acclient.c:332758)
+    internal void ApplyMotionInternal(MotionCommand motion, in MovementParameters p)
+    {
         if (motion == MotionCommand.TurnRight)
         {
             TurnCommand = MotionCommand.TurnRight;
-            TurnSpeed = p.Speed;
+            _turnSpeed = p.Speed;
         }
         else if (motion == MotionCommand.SideStepRight)
         {
             SidestepCommand = MotionCommand.SideStepRight;
-            SidestepSpeed = p.Speed;
+            _sidestepSpeed = p.Speed;
         }
         else if (((uint)motion & (uint)MotionCommandClass.Substate) != 0)
         {
             ForwardCommand = motion;
-            ForwardSpeed = p.Speed;
+            _forwardSpeed = p.Speed;
         }
         else if (((uint)motion & (uint)MotionCommandClass.Style) == 0)
         {
@@ -155,6 +178,9 @@ public sealed class InterpretedMotionState
     }
 
     /// <summary>Queues an action.</summary>
+    /// <exception cref="System.ArgumentException"><paramref name="speed"/> is NaN, infinite or beyond
+    /// ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (state unchanged; the action would be played at that speed after
+    /// the state's movement was applied). A full list ignores the action.</exception>
     // retail: InterpretedMotionState::AddAction (acclient.c:332724)
     public void AddAction(MotionCommand action, float speed, uint stamp, bool autonomous) =>
         Actions.Add(new ActionNode(action, speed, stamp, autonomous));

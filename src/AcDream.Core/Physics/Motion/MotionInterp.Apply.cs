@@ -13,6 +13,10 @@ public sealed partial class MotionInterp
     /// speed; then, with the run key (the given one, or the raw state's when <see cref="HoldKey.Invalid"/>),
     /// <see cref="ApplyRunToCommand"/>. A run forward is left alone.
     /// </summary>
+    /// <param name="motion">The command, converted in place.</param>
+    /// <param name="speed">Its speed, converted in place: any float (a pure conversion; nothing is stored, so there is no
+    /// domain to check; a speed handed on to the interpreter's entries must be within ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/>).</param>
+    /// <param name="key">The hold key; <see cref="HoldKey.Invalid"/> takes the raw state's.</param>
     // retail: CMotionInterp::adjust_motion (acclient.c:343745)
     public void AdjustMotion(ref MotionCommand motion, ref float speed, HoldKey key)
     {
@@ -56,6 +60,8 @@ public sealed partial class MotionInterp
 
     /// <summary>Applies the run key: a walk forward (at positive speed) becomes a run, every walk speed is multiplied by
     /// the run rate; a turn is 1.5 times faster; a side-step is multiplied by the run rate and clamped to ±3.</summary>
+    /// <param name="motion">The command, converted in place.</param>
+    /// <param name="speed">Its speed, converted in place: any float (a pure conversion; nothing is stored).</param>
     // retail: CMotionInterp::apply_run_to_command (acclient.c:343438)
     public void ApplyRunToCommand(ref MotionCommand motion, ref float speed)
     {
@@ -98,30 +104,26 @@ public sealed partial class MotionInterp
         RawMotionState r = RawState;
         InterpretedMotionState s = InterpretedState;
         s.CurrentStyle = r.CurrentStyle;
-        s.ForwardSpeed = r.ForwardSpeed;
         s.ForwardCommand = r.ForwardCommand;
         s.SidestepCommand = r.SidestepCommand;
-        s.SidestepSpeed = r.SidestepSpeed;
         s.TurnCommand = r.TurnCommand;
-        s.TurnSpeed = r.TurnSpeed;
 
+        // The conversions may go beyond MaxMotionSpeed (a run is the walk speed times the run rate): stored unchecked.
         MotionCommand c = s.ForwardCommand;
-        float v = s.ForwardSpeed;
-        AdjustMotion(ref c, ref v, r.ForwardHoldKey);
+        float forward = r.ForwardSpeed;
+        AdjustMotion(ref c, ref forward, r.ForwardHoldKey);
         s.ForwardCommand = c;
-        s.ForwardSpeed = v;
 
         c = s.SidestepCommand;
-        v = s.SidestepSpeed;
-        AdjustMotion(ref c, ref v, r.SidestepHoldKey);
+        float side = r.SidestepSpeed;
+        AdjustMotion(ref c, ref side, r.SidestepHoldKey);
         s.SidestepCommand = c;
-        s.SidestepSpeed = v;
 
         c = s.TurnCommand;
-        v = s.TurnSpeed;
-        AdjustMotion(ref c, ref v, r.TurnHoldKey);
+        float turn = r.TurnSpeed;
+        AdjustMotion(ref c, ref turn, r.TurnHoldKey);
         s.TurnCommand = c;
-        s.TurnSpeed = v;
+        s.SetSpeedsInternal(forward, side, turn);
 
         ApplyInterpretedMovement(cancelMoveTo, disallowJump);
     }
@@ -145,9 +147,12 @@ public sealed partial class MotionInterp
         p.Flags = (MovementParameterFlags)(((uint)p.Flags & 0xFFFD37FFu)
                                            | (((cancelMoveTo ? 1u : 0u) | (4u * (disallowJump ? 1u : 0u))) << 15));
         InterpretedMotionState s = InterpretedState;
-        if (s.ForwardCommand == MotionCommand.RunForward)
+        // non-retail: a run speed outside the run rate's domain (0, MaxRunRate] is not taken as the run rate (retail takes
+        // any; at zero or below the state velocity of a standing object is NaN). The entries refuse such a state; this
+        // keeps a client's own hand-edited InterpretedState from reaching the rate.
+        if (s.ForwardCommand == MotionCommand.RunForward && MotionChecks.IsRunRateInDomain(s.ForwardSpeed))
         {
-            MyRunRate = s.ForwardSpeed;
+            _myRunRate = s.ForwardSpeed;
         }
 
         DoInterpretedMotionUnchecked(s.CurrentStyle, p);
@@ -212,10 +217,13 @@ public sealed partial class MotionInterp
     /// </summary>
     /// <returns>False when there is no physics object.</returns>
     /// <exception cref="System.ArgumentNullException"><paramref name="newState"/> is null.</exception>
+    /// <exception cref="System.ArgumentException">The state runs forward (<see cref="MotionCommand.RunForward"/>) at a speed
+    /// outside the run rate's domain (0, <see cref="Spatial.InputLimits.MaxRunRate"/>] (nothing changes).</exception>
     // retail: CMotionInterp::move_to_interpreted_state (acclient.c:344371)
     public bool MoveToInterpretedState(InterpretedMotionState newState)
     {
         System.ArgumentNullException.ThrowIfNull(newState);
+        MotionChecks.CheckState(newState, nameof(newState));
         PhysicsObj? obj = _physicsObj;
         if (obj is null)
         {
@@ -242,7 +250,7 @@ public sealed partial class MotionInterp
                 ServerActionStamp = a.Stamp;
                 p.Speed = a.Speed;
                 p.Flags = a.Autonomous ? p.Flags | MovementParameterFlags.Autonomous : p.Flags & ~MovementParameterFlags.Autonomous;
-                DoInterpretedMotion(a.Action, p);
+                DoInterpretedMotionUnchecked(a.Action, p);
             }
         }
 

@@ -11,7 +11,7 @@ public sealed partial class MotionInterp
     /// the result (<see cref="DoInterpretedMotion"/>) and records the command in the raw state.
     /// </summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error (nothing recorded).</returns>
-    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     // retail: CMotionInterp::DoMotion (acclient.c:344599)
     public MotionError DoMotion(MotionCommand motion, in MovementParameters p)
     {
@@ -59,7 +59,8 @@ public sealed partial class MotionInterp
             return MotionError.TooManyActions;
         }
 
-        MotionError result = DoInterpretedMotion(adjustedMotion, adjusted);
+        // The converted speed (a run: times the run rate) may exceed MaxMotionSpeed; p itself was checked above.
+        MotionError result = DoInterpretedMotionUnchecked(adjustedMotion, adjusted);
         if (result == MotionError.None && p.Has(MovementParameterFlags.ModifyRawState))
         {
             RawState.ApplyMotion(motion, p);
@@ -71,7 +72,7 @@ public sealed partial class MotionInterp
     /// <summary>Stops a command as the player gives it: converts it as <see cref="DoMotion"/> does, stops the result and
     /// removes the command from the raw state.</summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
-    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     // retail: CMotionInterp::StopMotion (acclient.c:344080)
     public MotionError StopMotion(MotionCommand motion, in MovementParameters p)
     {
@@ -91,7 +92,7 @@ public sealed partial class MotionInterp
         MovementParameters adjusted = p;
         MotionCommand adjustedMotion = motion;
         AdjustMotion(ref adjustedMotion, ref adjusted.Speed, p.HoldKeyToApply);
-        MotionError result = StopInterpretedMotion(adjustedMotion, adjusted);
+        MotionError result = StopInterpretedMotionUnchecked(adjustedMotion, adjusted);
         if (result == MotionError.None && p.Has(MovementParameterFlags.ModifyRawState))
         {
             RawState.RemoveMotion(motion);
@@ -106,7 +107,7 @@ public sealed partial class MotionInterp
     /// long jump charges, a walk, run or side-step) it is only recorded; an action in the air fails with 0x24.
     /// </summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
-    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     // retail: CMotionInterp::DoInterpretedMotion (acclient.c:343974)
     public MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
@@ -157,7 +158,7 @@ public sealed partial class MotionInterp
                     AddToQueue(p.ContextId, motion, jumpError);
                     if (p.Has(MovementParameterFlags.ModifyInterpretedState))
                     {
-                        InterpretedState.ApplyMotion(motion, p);
+                        InterpretedState.ApplyMotionInternal(motion, p);
                     }
                 }
             }
@@ -187,7 +188,7 @@ public sealed partial class MotionInterp
     {
         if (p.Has(MovementParameterFlags.ModifyInterpretedState))
         {
-            InterpretedState.ApplyMotion(motion, p);
+            InterpretedState.ApplyMotionInternal(motion, p);
         }
 
         return MotionError.None;
@@ -196,7 +197,7 @@ public sealed partial class MotionInterp
     /// <summary>Stops an interpreted motion: through the motion table when it may move (queueing a Ready), otherwise only
     /// in the interpreted state.</summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
-    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     // retail: CMotionInterp::StopInterpretedMotion (acclient.c:344033)
     public MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {

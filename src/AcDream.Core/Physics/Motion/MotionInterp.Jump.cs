@@ -268,7 +268,14 @@ public sealed partial class MotionInterp
         }
 
         Vector3 v = LeaveGroundVelocity;
-        obj.SetLocalVelocity(v);
+        // non-retail: a non-finite leave-ground velocity is not applied (the velocity is kept). The API's domains keep the
+        // interpreter's own values finite; only a client's weenie can still give one (a run rate of zero or below, a NaN jump
+        // velocity), and set_local_velocity's refusal would have thrown out of SetPosition, MoveOrTeleport, Jump or a tick
+        // after they had changed the object.
+        if (VectorMath.IsFinite(v))
+        {
+            obj.SetLocalVelocity(v);
+        }
         StandingLongJump = false;
         JumpExtent = 0f;
         obj.RemoveLinkAnimations();

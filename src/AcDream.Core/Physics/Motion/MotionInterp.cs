@@ -98,11 +98,13 @@ public sealed partial class MotionInterp : IMotionInterpreter
     public uint ServerActionStamp { get; internal set; }
 
     /// <summary>The run rate last received (retail <c>my_run_rate</c>, 1 at creation): used when the weenie cannot say.</summary>
-    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="System.ArgumentException">The value is not in (0, <see cref="InputLimits.MaxRunRate"/>] (state
+    /// unchanged). Retail takes any float; at zero or below the state velocity's cap (4 × rate) is negative and a standing
+    /// object's state velocity is 0 / 0 = NaN.</exception>
     public float MyRunRate
     {
         get => _myRunRate;
-        set => _myRunRate = MotionChecks.Finite(value);
+        set => _myRunRate = MotionChecks.RunRate(value);
     }
 
     private float _myRunRate = 1f;

@@ -116,16 +116,19 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Applies a whole interpreted state from the server (creating the interpreter).</summary>
     /// <exception cref="ArgumentNullException"><paramref name="state"/> is null.</exception>
+    /// <exception cref="ArgumentException">The state runs forward at a speed outside the run rate's domain
+    /// (see <see cref="MotionInterp.MoveToInterpretedState"/>); nothing changes, no interpreter is created.</exception>
     // retail: MovementManager::move_to_interpreted_state (acclient.c:339220)
     public void MoveToInterpretedState(InterpretedMotionState state)
     {
         ArgumentNullException.ThrowIfNull(state);
+        MotionChecks.CheckState(state, nameof(state));
         GetOrCreateMotionInterpreter().MoveToInterpretedState(state);
     }
 
     /// <summary>Starts a command as the player gives it (<see cref="MotionInterp.DoMotion"/>), then takes the finished motions.</summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
-    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     /// <remarks>The object's <see cref="Objects.PhysicsObj.LastMoveWasAutonomous"/> becomes true first, as
     /// <c>CPhysicsObj::DoMotion</c> (acclient.c:317314) sets it: this client's own commands.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 1 -> CMotionInterp::PerformMovement (acclient.c:344669)
@@ -141,7 +144,7 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Starts an interpreted motion (<see cref="MotionInterp.DoInterpretedMotion"/>), then takes the finished motions.</summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
-    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 2
     public MotionError DoInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {
@@ -154,7 +157,7 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Stops a command as the player gives it (<see cref="MotionInterp.StopMotion"/>), then takes the finished motions.</summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
-    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     /// <remarks>Marks the move autonomous first, as <c>CPhysicsObj::StopMotion</c> (acclient.c:317353) does.</remarks>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 3
     public MotionError StopMotion(MotionCommand motion, in MovementParameters p)
@@ -169,7 +172,7 @@ public sealed class MovementManager : IMovementManager
 
     /// <summary>Stops an interpreted motion, then takes the finished motions.</summary>
     /// <returns><see cref="MotionError.None"/> on success, else the error.</returns>
-    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> (all zeros; use <c>new MovementParameters()</c>) or its speed is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     // retail: MovementManager::PerformMovement (acclient.c:339174), type 4
     public MotionError StopInterpretedMotion(MotionCommand motion, in MovementParameters p)
     {

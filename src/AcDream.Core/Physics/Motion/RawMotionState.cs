@@ -23,11 +23,11 @@ public sealed class RawMotionState
     public HoldKey ForwardHoldKey { get; set; }
 
     /// <summary>Speed of the forward command.</summary>
-    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="System.ArgumentException">The value is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (state unchanged).</exception>
     public float ForwardSpeed
     {
         get => _forwardSpeed;
-        set => _forwardSpeed = MotionChecks.Finite(value);
+        set => _forwardSpeed = MotionChecks.Speed(value);
     }
 
     private float _forwardSpeed;
@@ -39,11 +39,11 @@ public sealed class RawMotionState
     public HoldKey SidestepHoldKey { get; set; }
 
     /// <summary>Speed of the side-step.</summary>
-    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="System.ArgumentException">The value is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (state unchanged).</exception>
     public float SidestepSpeed
     {
         get => _sidestepSpeed;
-        set => _sidestepSpeed = MotionChecks.Finite(value);
+        set => _sidestepSpeed = MotionChecks.Speed(value);
     }
 
     private float _sidestepSpeed;
@@ -55,11 +55,11 @@ public sealed class RawMotionState
     public HoldKey TurnHoldKey { get; set; }
 
     /// <summary>Speed of the turn.</summary>
-    /// <exception cref="System.ArgumentException">The value is NaN or infinite (state unchanged).</exception>
+    /// <exception cref="System.ArgumentException">The value is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (state unchanged).</exception>
     public float TurnSpeed
     {
         get => _turnSpeed;
-        set => _turnSpeed = MotionChecks.Finite(value);
+        set => _turnSpeed = MotionChecks.Speed(value);
     }
 
     private float _turnSpeed;
@@ -85,9 +85,11 @@ public sealed class RawMotionState
     }
 
     /// <summary>Copies everything, the actions included.</summary>
+    /// <exception cref="System.ArgumentNullException"><paramref name="rhs"/> is null.</exception>
     // retail: RawMotionState::operator= (acclient.c:332923)
     public void CopyFrom(RawMotionState rhs)
     {
+        System.ArgumentNullException.ThrowIfNull(rhs);
         CurrentHoldKey = rhs.CurrentHoldKey;
         CurrentStyle = rhs.CurrentStyle;
         ForwardCommand = rhs.ForwardCommand;
@@ -104,7 +106,7 @@ public sealed class RawMotionState
 
     /// <summary>Records a started command with its hold key (none when the parameters set the hold key).</summary>
     /// <exception cref="System.ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed
-    /// is NaN or infinite (state unchanged).</exception>
+    /// is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (state unchanged).</exception>
     // retail: RawMotionState::ApplyMotion (acclient.c:332851)
     public void ApplyMotion(MotionCommand motion, in MovementParameters p)
     {
@@ -184,6 +186,8 @@ public sealed class RawMotionState
     }
 
     /// <summary>Queues an action.</summary>
+    /// <exception cref="System.ArgumentException"><paramref name="speed"/> is NaN, infinite or beyond
+    /// ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/> (state unchanged). A full list ignores the action.</exception>
     // retail: RawMotionState::AddAction (acclient.c:332581)
     public void AddAction(MotionCommand action, float speed, uint stamp, bool autonomous) =>
         Actions.Add(new ActionNode(action, speed, stamp, autonomous));

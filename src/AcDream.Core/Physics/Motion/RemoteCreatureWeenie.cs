@@ -4,6 +4,8 @@ namespace AcDream.Core.Physics.Motion;
 /// Another client's creature or player as this client sees it (retail <c>ACCWeenieObject</c> of an object that is not the
 /// player): a creature whose run rate and jump the interpreter does not ask (they arrive with its MovementEvents).
 /// </summary>
+/// <remarks>Its members are pure queries with no value domain: every argument is accepted (the answers are fixed), and the
+/// float results are outputs.</remarks>
 public sealed class RemoteCreatureWeenie : IMotionWeenie
 {
     /// <summary>A remote creature that is not a player.</summary>

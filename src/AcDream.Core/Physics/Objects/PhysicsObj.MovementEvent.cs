@@ -30,8 +30,9 @@ public sealed partial class PhysicsObj
     /// <exception cref="ArgumentNullException"><paramref name="message"/> is null.</exception>
     /// <exception cref="ArgumentException">The message is for another object, its type is not 0, 6, 7, 8 or 9, or (types
     /// 6-9) its parameters are <c>default(MovementParameters)</c>, hold a NaN or infinite number or a speed beyond
-    /// ±<see cref="MovementParameters.MaxMoveToSpeed"/>, its run rate or heading is
-    /// not finite, or (types 6, 7) its origin is outside the position domain; nothing changes.</exception>
+    /// ±<see cref="MovementParameters.MaxMoveToSpeed"/>, its heading is not finite, (types 6, 7) its run rate is not in
+    /// (0, <see cref="InputLimits.MaxRunRate"/>] or its origin is outside the position domain, or (type 0) its state runs
+    /// forward at a speed outside (0, <see cref="InputLimits.MaxRunRate"/>]; nothing changes.</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysics::SetObjectMovement (acclient.c:311148)
     public MovementEventResult HandleMovementEvent(MovementEventMessage message)
@@ -81,12 +82,16 @@ public sealed partial class PhysicsObj
         switch (m.MovementType)
         {
             case MovementEventType.InterpretedMotion:
+                // The state's RunForward speed becomes the run rate, and its actions play after its movement.
+                MotionChecks.CheckState(m.State, nameof(m));
                 return;
             case MovementEventType.MoveToObject:
             case MovementEventType.MoveToPosition:
-                if (!float.IsFinite(m.RunRate))
+                // non-retail: the run rate's domain (InputLimits.MaxRunRate); retail stores any float as my_run_rate
+                if (!MotionChecks.IsRunRateInDomain(m.RunRate))
                 {
-                    throw new ArgumentException("The MovementEvent's run rate must be finite.", nameof(m));
+                    throw new ArgumentException(
+                        $"The MovementEvent's run rate must be in (0, {InputLimits.MaxRunRate}] (got {m.RunRate}).", nameof(m));
                 }
 
                 if (!InputLimits.IsPositionInDomain(m.Origin))
@@ -133,8 +138,8 @@ public sealed partial class PhysicsObj
     /// (<see cref="MovementManager.DoMotion"/>).</summary>
     /// <returns>The motion error; <see cref="MotionError.NoMovementManager"/> when the object has no movement manager yet
     /// or a client's own, nothing started (retail answers 7, <see cref="MotionError.NoMotionTable"/>).</returns>
-    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed is NaN
-    /// or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed is NaN,
+    /// infinite or beyond ±<see cref="InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::DoMotion (acclient.c:317314)
     public MotionError DoMotion(MotionCommand motion, in MovementParameters p)
@@ -152,8 +157,8 @@ public sealed partial class PhysicsObj
     /// (<see cref="MovementManager.StopMotion"/>).</summary>
     /// <returns>The motion error; <see cref="MotionError.NoMovementManager"/> without a movement manager or with a
     /// client's own (retail answers 7, <see cref="MotionError.NoMotionTable"/>).</returns>
-    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed is NaN
-    /// or infinite (nothing changes).</exception>
+    /// <exception cref="ArgumentException"><paramref name="p"/> is <c>default(MovementParameters)</c> or its speed is NaN,
+    /// infinite or beyond ±<see cref="InputLimits.MaxMotionSpeed"/> (nothing changes).</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     // retail: CPhysicsObj::StopMotion (acclient.c:317353)
     public MotionError StopMotion(MotionCommand motion, in MovementParameters p)

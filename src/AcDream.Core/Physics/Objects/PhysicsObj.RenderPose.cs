@@ -100,17 +100,27 @@ public sealed partial class PhysicsObj
     }
 
     /// <summary>Starts an update's pose record: the placements from here on cut it.</summary>
-    private void BeginPoseRecord() => _poseCut = false;
+    /// <returns>Whether the object was placed since the last record (the mark this clears; <see cref="EndPoseRecord"/> puts it
+    /// back when the update records no pair).</returns>
+    private bool BeginPoseRecord()
+    {
+        bool placed = _poseCut;
+        _poseCut = false;
+        return placed;
+    }
 
     /// <summary>Records the pose pair of the update that began at <paramref name="start"/> (time <paramref name="startTime"/>)
     /// and ended now, at <see cref="UpdateTime"/>; a placement during the update makes the pair the end pose twice.</summary>
-    private void EndPoseRecord(in Position start, double startTime)
+    private void EndPoseRecord(in Position start, double startTime, bool placedBefore)
     {
         double end = _scene.UpdateTime;
         if (!_poseCut && !(end > startTime))
         {
             // No time consumed (a dt at or below EPSILON, or one the ACE profile accumulates): no step ran and nothing placed
-            // the object, so the pair recorded before still describes its path.
+            // the object during the update, so the pair recorded before still describes its path — unless the object was
+            // placed before the update (then there is no such pair: it stays drawn at its position, and PreviousPose, never
+            // recorded, is not read as one).
+            _poseCut = placedBefore;
             return;
         }
 

@@ -51,7 +51,7 @@ public sealed partial class PhysicsObj
         double start = UpdateTime;
         // non-retail: the pose this update starts from, for render interpolation (PhysicsObj.RenderPose.cs)
         Position startPose = _position;
-        BeginPoseRecord();
+        bool placedBefore = BeginPoseRecord();
         world.PhysicsTime = start;
         var slicer = new QuantumSlicer(world.Profile, start, world.CurrentTime);
         // non-retail: a callback that removed the object from its world ends its update
@@ -62,7 +62,7 @@ public sealed partial class PhysicsObj
         }
 
         UpdateTime = slicer.EndTime(start);
-        EndPoseRecord(startPose, start);
+        EndPoseRecord(startPose, start, placedBefore);
     }
 
     /// <summary>One simulation step of <paramref name="quantum"/> seconds. Active: the next position

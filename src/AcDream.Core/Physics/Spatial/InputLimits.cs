@@ -72,6 +72,24 @@ public static class InputLimits
     /// 19,200 m, within <see cref="MaxCoordinate"/>.</summary>
     public const float MaxStepHeight = LandDefs.BlockLength;
 
+    /// <summary>
+    /// Largest magnitude of a motion speed, unitless (a multiple of the motion's normal speed): 100. Applies to the speeds a
+    /// client or a server hands the motion interpreter (<c>MovementParameters.Speed</c> of a motion command, the raw and
+    /// interpreted states' speeds, an action's speed). Retail's server sends 1, the run rate (about 1 to 4.5) or 1.5 (a
+    /// melee charge); at 3e38 the state velocity (4 × speed) overflowed to infinity and the leave-ground velocity became NaN.
+    /// The interpreter's own conversions (a run is the walk speed times the run rate) may go beyond it, up to
+    /// 100 × <see cref="MaxRunRate"/>.
+    /// </summary>
+    public const float MaxMotionSpeed = 100f;
+
+    /// <summary>
+    /// Largest run rate, unitless: 100; a run rate is in (0, 100]. Applies to <c>MotionInterp.MyRunRate</c>, a MovementEvent's
+    /// run rate (types 6 and 7) and the speed of an interpreted <c>RunForward</c> (which the interpreter takes as its run
+    /// rate). Retail's run rates are about 1 to 4.5; a rate of zero or below made the state velocity's cap (4 × rate)
+    /// negative, and the velocity of a standing object 0 / 0 = NaN.
+    /// </summary>
+    public const float MaxRunRate = 100f;
+
     /// <summary>True when <paramref name="h"/> is a step height in [0, <see cref="MaxStepHeight"/>].</summary>
     internal static bool IsStepHeightInDomain(float h) => h >= 0f && h <= MaxStepHeight;
 

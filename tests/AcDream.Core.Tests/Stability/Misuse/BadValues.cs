@@ -1,5 +1,6 @@
 using System;
 using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Motion.Wire;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Collision.Primitives;
@@ -187,6 +188,29 @@ internal static class BadValues
             yield return ("every flag", new MovementParameters { Flags = (MovementParameterFlags)0xFFFFFFFFu });
             yield return ("hold key 7", new MovementParameters { HoldKeyToApply = (HoldKey)7 });
         }
+        else if (t == typeof(ActionNode))
+        {
+            foreach ((string l, float f) in Floats)
+            {
+                yield return ("speed " + l, new ActionNode(GoodAction, f, 1, false));
+            }
+
+            yield return ("speed 101", new ActionNode(GoodAction, 101f, 1, false));
+        }
+        else if (t == typeof(InterpretedMotionState))
+        {
+            foreach ((string l, InterpretedMotionState st) in States())
+            {
+                yield return (l, st);
+            }
+        }
+        else if (t == typeof(MovementEventMessage))
+        {
+            foreach ((string l, MovementEventMessage m) in Messages(s: null))
+            {
+                yield return (l, m);
+            }
+        }
         else if (t == typeof(TargetInfo))
         {
             var g = (TargetInfo)good!;
@@ -195,6 +219,121 @@ internal static class BadValues
                 TargetInfo i = g;
                 i.TargetPosition = p;
                 yield return ("target " + l, i);
+            }
+        }
+    }
+
+    /// <summary>An action command (0x10000057, a bow): its class bit 0x10000000 makes it an action.</summary>
+    private const MotionCommand GoodAction = (MotionCommand)0x10000057u;
+
+    /// <summary>Interpreted states a client can build (every speed within ±100, so each setter accepts it) that the motion
+    /// entries must refuse: a run at a rate of zero, below zero or beyond 100 (the interpreter takes a run's speed as its run
+    /// rate; at zero or below a standing object's state velocity is NaN).</summary>
+    private static IEnumerable<(string, InterpretedMotionState)> States()
+    {
+        foreach (float v in new[] { -1f, 0f, -0f, Subnormal * -1f, 100f })
+        {
+            var st = new InterpretedMotionState { ForwardCommand = MotionCommand.RunForward };
+            st.ForwardSpeed = v == 100f ? 100f : v;
+            if (v == 100f)
+            {
+                // Every speed at the edge, a side-step and a turn: accepted, and the world ticks on.
+                st.SidestepCommand = MotionCommand.SideStepRight;
+                st.SidestepSpeed = -100f;
+                st.TurnCommand = MotionCommand.TurnRight;
+                st.TurnSpeed = 100f;
+                st.AddAction(GoodAction, -100f, 1, false);
+            }
+
+            yield return ($"running at {v}", st);
+        }
+
+        yield return ("walking at -100", new InterpretedMotionState { ForwardCommand = MotionCommand.WalkForward, ForwardSpeed = -100f });
+        yield return ("undefined commands", new InterpretedMotionState
+        {
+            CurrentStyle = (MotionCommand)0x7FFFFFFF, ForwardCommand = (MotionCommand)0x7FFFFFFF,
+            SidestepCommand = (MotionCommand)0x7FFFFFFF, TurnCommand = (MotionCommand)0x7FFFFFFF,
+        });
+    }
+
+    /// <summary>MovementEvents a client can build (or a hostile server send, after the decoder): every movement type with
+    /// each bad value its fields allow. <see cref="Address"/> addresses each to the object it is handed to.</summary>
+    private static IEnumerable<(string, MovementEventMessage)> Messages(MisuseScene? s)
+    {
+        MovementEventMessage M(MovementEventType type)
+        {
+            var m = new MovementEventMessage { MovementTimestamp = 1, MovementType = type, TargetId = 2u, Origin = MisuseScene.At(100f, 110f) };
+            return m;
+        }
+
+        var other = M(MovementEventType.InterpretedMotion);
+        other.ObjectId = 0x7FFFFFFFu;
+        yield return ("for another object", other);
+        yield return ("movement type 5", M((MovementEventType)5));
+        yield return ("stale stamp 0", new MovementEventMessage { MovementTimestamp = 0 });
+        foreach ((string l, InterpretedMotionState st) in States())
+        {
+            MovementEventMessage m = M(MovementEventType.InterpretedMotion);
+            m.State.CopyFrom(st);
+            m.StickToObject = 2u;
+            yield return ("type 0 " + l, m);
+        }
+
+        foreach (MovementEventType type in new[] { MovementEventType.MoveToObject, MovementEventType.MoveToPosition })
+        {
+            foreach ((string l, float f) in Floats)
+            {
+                MovementEventMessage m = M(type);
+                m.RunRate = f;
+                yield return ($"type {(int)type} run rate {l}", m);
+            }
+
+            foreach (float f in new[] { 0f, 1e38f, 100.00001f, 100f })
+            {
+                MovementEventMessage m = M(type);
+                m.RunRate = f;
+                yield return ($"type {(int)type} run rate {f}", m);
+            }
+
+            foreach ((string l, Position p) in Positions(MisuseScene.At(100f, 110f)))
+            {
+                MovementEventMessage m = M(type);
+                m.Origin = p;
+                yield return ($"type {(int)type} origin {l}", m);
+            }
+
+            MovementEventMessage unknown = M(type);
+            unknown.TargetId = 0x12345678u;
+            yield return ($"type {(int)type} unknown target", unknown);
+        }
+
+        foreach (MovementEventType type in new[] { MovementEventType.MoveToObject, MovementEventType.MoveToPosition,
+                     MovementEventType.TurnToObject, MovementEventType.TurnToHeading })
+        {
+            foreach ((string l, object? p) in For(typeof(MovementParameters), new MovementParameters()))
+            {
+                MovementEventMessage m = M(type);
+                m.Parameters = (MovementParameters)p!;
+                yield return ($"type {(int)type} parameters {l}", m);
+            }
+        }
+
+        foreach ((string l, float f) in Floats)
+        {
+            MovementEventMessage m = M(MovementEventType.TurnToObject);
+            m.TurnToObjectHeading = f;
+            yield return ("type 8 heading " + l, m);
+        }
+    }
+
+    /// <summary>Addresses every MovementEvent argument that has no object id (0) to <paramref name="target"/>.</summary>
+    public static void Address(object?[] args, PhysicsObj? target)
+    {
+        foreach (object? a in args)
+        {
+            if (a is MovementEventMessage { ObjectId: 0 } m && target is not null)
+            {
+                m.ObjectId = target.Id;
             }
         }
     }
@@ -289,6 +428,13 @@ internal static class BadValues
                 ContextId = 0, ObjectId = 2u, Status = TargetStatus.Ok, TargetPosition = s!.Other.Position,
             },
             _ when t == typeof(PhysicsObj) => s!.Other,
+            _ when t == typeof(ActionNode) => new ActionNode(GoodAction, 1f, 1, false),
+            _ when t == typeof(InterpretedMotionState) => new InterpretedMotionState
+            {
+                ForwardCommand = MotionCommand.RunForward, ForwardSpeed = 2f,
+            },
+            _ when t == typeof(RawMotionState) => new RawMotionState(),
+            _ when t == typeof(MovementEventMessage) => GoodMessage(),
             _ when t == typeof(IAnimHook) => new NopAnimHook(),
             _ when t == typeof(PhysicsObjHook) => new NopHook(),
             _ when t == typeof(IPartArray) => new SimplePartArray(1, 1),
@@ -302,6 +448,15 @@ internal static class BadValues
     }
 
     private static readonly object Missing = new();
+
+    // A type-0 event running at rate 2 (ObjectId 0: Address gives it the object it is handed to).
+    private static MovementEventMessage GoodMessage()
+    {
+        var m = new MovementEventMessage { MovementTimestamp = 1 };
+        m.State.ForwardCommand = MotionCommand.RunForward;
+        m.State.ForwardSpeed = 2f;
+        return m;
+    }
 
     private sealed class NopAnimHook : IAnimHook
     {

@@ -30,6 +30,10 @@ public class InputLimitsConstantsTests
         Assert.Equal(1000f, InputLimits.MaxAcceleration);
         Assert.Equal(0x447A0000, BitConverter.SingleToInt32Bits(InputLimits.MaxAcceleration));
         Assert.Equal(192f, InputLimits.MaxSweepDistance);
+        // Motion speeds within ±100 and run rates in (0, 100]: 100f = 0x42C80000; the sticky step at most 100 m.
+        Assert.Equal(0x42C80000, BitConverter.SingleToInt32Bits(InputLimits.MaxMotionSpeed));
+        Assert.Equal(0x42C80000, BitConverter.SingleToInt32Bits(InputLimits.MaxRunRate));
+        Assert.Equal(0x42C80000, BitConverter.SingleToInt32Bits(AcDream.Core.Physics.Managers.StickyManager.MaxStep));
         Assert.Equal(65536, ObjCell.MaxShadowCapacity);
     }
 }

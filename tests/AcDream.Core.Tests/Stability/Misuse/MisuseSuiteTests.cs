@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Linq;
 using System.Reflection;
+using AcDream.Core.Physics.Objects;
 using Xunit;
 
 namespace AcDream.Core.Tests.Stability.Misuse;
@@ -68,17 +69,25 @@ public class MisuseSuiteTests
         List<string> failures)
     {
         var s = new MisuseScene();
-        object target = MutatorCatalog.Resolve(s, path);
+        object? target = MutatorCatalog.Resolve(s, path);
         var args = new object?[ps.Length];
         for (int k = 0; k < ps.Length; k++)
         {
             BadValues.TryGood(MutatorCatalog.ParamType(ps[k]), s, out args[k]);
+            if (path == "static" && args[k] is PhysicsObj)
+            {
+                // A static entry's object is the scene's creature (retail's movement manager).
+                args[k] = s.Creature;
+            }
         }
 
         if (badIndex >= 0)
         {
             args[badIndex] = BadValues.For(MutatorCatalog.ParamType(ps[badIndex]), args[badIndex]).First(b => b.Label == label).Value;
         }
+
+        // A MovementEvent is addressed to the object it is handed to (unless the bad value is one for another object).
+        BadValues.Address(args, target as PhysicsObj);
 
         string name = badIndex >= 0 ? $"{ps[badIndex].Name} = {label}" : label;
         PublicState before = PublicState.Capture(s);
@@ -131,6 +140,13 @@ public class MisuseSuiteTests
             "SimplePartArray.set_SequenceVelocity(Vector3)", "PositionManager.ConstrainTo(Position, Single, Single)",
             "InterpolationManager.InterpolateTo(Position, Boolean)", "ConstraintManager.ConstrainTo(Position, Single, Single)",
             "StickyManager.StickTo(UInt32, Single, Single)", "TerrainWorld.RemoveLandBlock(UInt32, ICollection`1)",
+            // The motion surface (issue #34): the creature's movement manager, interpreter, states and move-to, and the
+            // static MovementEvent entry.
+            "PhysicsObj.HandleMovementEvent(MovementEventMessage)", "MotionInterp.set_MyRunRate(Single)",
+            "MotionInterp.DoMotion(MotionCommand, MovementParameters)", "MovementManager.MoveToInterpretedState(InterpretedMotionState)",
+            "InterpretedMotionState.AddAction(MotionCommand, Single, UInt32, Boolean)", "ActionList.Add(ActionNode)",
+            "RawMotionState.set_ForwardSpeed(Single)", "MovementManager.MoveToPosition(Position, MovementParameters)",
+            "MovementEvent.ApplyInterpretedMotion(PhysicsObj, InterpretedMotionState, UInt32, Boolean)",
         ];
         foreach (string e in expected)
         {

@@ -27,6 +27,8 @@ internal static class MutatorCatalog
         // bypasses the object: each still refuses non-finite values (NonFiniteInputsAreRefusedTests) but may desynchronise
         // the part array from its object, which is the client's business.
         ["SimplePartArray.Update(Single, Frame)"] = "engine seam: the object's step calls it with its quantum",
+        ["AnimatedPartArray.Update(Single, Frame)"] = "engine seam: the object's step calls it with its quantum",
+        ["AnimatedPartArray.CopyPartFrames(Span`1)"] = "span output (the parts' frames, for drawing): AnimatedPartArrayApiTests",
         ["SimplePartArray.SetCellId(UInt32)"] = "engine seam: the object hands its own cell id",
         ["SimplePartArray.SetFrame(Frame)"] = "engine seam: the object hands its own frame",
         // Sweep entry points are the engine's seam to the collision module (CollisionSweep); SweepObject and SetPosition are
@@ -50,6 +52,17 @@ internal static class MutatorCatalog
     };
 
     private static readonly Assembly Library = typeof(PhysicsWorld).Assembly;
+
+    /// <summary>The object's members that reach its movement manager: also called on the scene's creature, which has retail's
+    /// movement manager and interpreter (on the walker, whose manager is a client's own, they answer without moving).</summary>
+    private static readonly HashSet<string> MotionMembers = new(StringComparer.Ordinal)
+    {
+        "HandleMovementEvent", "DoMotion", "StopMotion", "MoveToObject", "TurnToObject", "TurnToHeading", "StopCompletely",
+        "StickToObject", "SetPosition", "MoveOrTeleport", "HandleUpdateTarget", "MakeMovementManager",
+    };
+
+    /// <summary>Static entry points of the library, called with the scene's creature as their object argument.</summary>
+    private static readonly Type[] StaticEntries = [typeof(AcDream.Core.Physics.Motion.Wire.MovementEvent)];
 
     /// <summary>The member's name in the catalog.</summary>
     public static string Name(MethodInfo m) =>
@@ -91,6 +104,21 @@ internal static class MutatorCatalog
                 {
                     // The object's members are also called on the dormant object: a refusal must not even wake it.
                     list.Add((m, "resting"));
+                    if (MotionMembers.Contains(m.Name))
+                    {
+                        list.Add((m, "creature"));
+                    }
+                }
+            }
+        }
+
+        foreach (Type t in StaticEntries)
+        {
+            foreach (MethodInfo m in t.GetMethods(BindingFlags.Public | BindingFlags.Static))
+            {
+                if (m.DeclaringType == t && !m.IsGenericMethodDefinition)
+                {
+                    list.Add((m, "static"));
                 }
             }
         }
@@ -99,11 +127,21 @@ internal static class MutatorCatalog
     }
 
     /// <summary>The instance at <paramref name="path"/> in scene <paramref name="s"/>.</summary>
-    public static object Resolve(MisuseScene s, string path)
+    public static object? Resolve(MisuseScene s, string path)
     {
         if (path == "resting")
         {
             return s.Resting;
+        }
+
+        if (path == "creature")
+        {
+            return s.Creature;
+        }
+
+        if (path == "static")
+        {
+            return null!;
         }
 
         foreach ((object o, string p) in PublicState.Capture(s).Objects)

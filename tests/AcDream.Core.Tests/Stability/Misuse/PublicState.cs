@@ -50,6 +50,7 @@ internal sealed class PublicState
         st.Walk(s.Walker, "walker", 0);
         st.Walk(s.Other, "other", 0);
         st.Walk(s.Resting, "resting", 0);
+        st.Walk(s.Creature, "creature", 0);
         st.Walk(s.Terrain, "terrain", 0);
         // The walker's landblock and land cell (reached through the terrain's queries, not its properties).
         st.Walk(s.Terrain.GetLandBlock(SweepScene.BlockX, SweepScene.BlockY), "block", 0);

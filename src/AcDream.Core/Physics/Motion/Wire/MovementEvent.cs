@@ -22,6 +22,9 @@ public static class MovementEvent
     /// </summary>
     /// <returns>True when applied; false when the object's movement manager is a client's own.</returns>
     /// <exception cref="ArgumentNullException">An argument is null (nothing changes).</exception>
+    /// <exception cref="ArgumentException">The state runs forward (<see cref="MotionCommand.RunForward"/>) at a speed outside
+    /// the run rate's domain (0, <see cref="Spatial.InputLimits.MaxRunRate"/>] (nothing changes; the interpreter would take
+    /// it as its run rate).</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     /// <remarks>Retail ignores the event while the object has no interpreter yet; here one is created (in its default
     /// state) first, which is what retail's object creation has always done by the time a MovementEvent arrives.</remarks>
@@ -31,6 +34,7 @@ public static class MovementEvent
     {
         ArgumentNullException.ThrowIfNull(obj);
         ArgumentNullException.ThrowIfNull(state);
+        MotionChecks.CheckState(state, nameof(state));
         // non-retail: the interpreter is created when absent (retail returns without it)
         if (obj.MakeMovementManager(true) is not MovementManager mm)
         {

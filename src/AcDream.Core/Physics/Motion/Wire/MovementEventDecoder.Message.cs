@@ -93,7 +93,7 @@ public static partial class MovementEventDecoder
 
                 m.Origin = UnPackOrigin(ref r);
                 m.Parameters = UnPackNet(ref r, (MovementEventType)type);
-                m.RunRate = r.ReadFiniteSingle("run rate");
+                m.RunRate = ReadRunRate(ref r);
                 break;
             case 8:
                 m.MovementType = MovementEventType.TurnToObject;

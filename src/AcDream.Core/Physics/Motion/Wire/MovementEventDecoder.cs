@@ -69,8 +69,9 @@ public static partial class MovementEventDecoder
     /// <summary>Reads an interpreted motion state at <paramref name="offset"/>: a flag word, then the style, forward,
     /// side-step and turn command indices (flags 0x1, 0x2, 0x8, 0x20), the forward, side-step and turn speeds (0x4, 0x10,
     /// 0x40), (flags >> 7) &amp; 31 actions (index, 15-bit stamp with the autonomous bit, speed), then padding to 4 bytes.
-    /// Absent fields take the defaults. False (state unspecified) for a short buffer, an unknown command index or a NaN
-    /// or infinite speed.</summary>
+    /// Absent fields take the defaults. False (state unspecified) for a short buffer, an unknown command index, a speed
+    /// that is NaN, infinite or beyond ±<see cref="Spatial.InputLimits.MaxMotionSpeed"/>, or a RunForward whose speed is
+    /// not a run rate in (0, <see cref="Spatial.InputLimits.MaxRunRate"/>].</summary>
     /// <exception cref="ArgumentNullException"><paramref name="state"/> is null.</exception>
     // retail: InterpretedMotionState::UnPack (acclient.c:333444)
     public static bool TryUnPackInterpretedState(ReadOnlySpan<byte> data, ref int offset, InterpretedMotionState state)
@@ -124,17 +125,17 @@ public static partial class MovementEventDecoder
 
         if ((flags & 0x4) != 0)
         {
-            state.ForwardSpeed = r.ReadFiniteSingle("forward speed");
+            state.ForwardSpeed = ReadSpeed(ref r, "forward speed");
         }
 
         if ((flags & 0x10) != 0)
         {
-            state.SidestepSpeed = r.ReadFiniteSingle("sidestep speed");
+            state.SidestepSpeed = ReadSpeed(ref r, "sidestep speed");
         }
 
         if ((flags & 0x40) != 0)
         {
-            state.TurnSpeed = r.ReadFiniteSingle("turn speed");
+            state.TurnSpeed = ReadSpeed(ref r, "turn speed");
         }
 
         int actions = r.CheckCount((flags >> 7) & 0x1F, "actions", 8, flagsAt);
@@ -142,11 +143,44 @@ public static partial class MovementEventDecoder
         {
             MotionCommand cmd = ReadCommand(ref r, "action");
             ushort stamp = r.ReadUInt16("action stamp");
-            float speed = r.ReadFiniteSingle("action speed");
+            float speed = ReadSpeed(ref r, "action speed");
             state.AddAction(cmd, speed, stamp & 0x7FFFu, ((stamp >> 15) & 1) != 0);
         }
 
+        // non-retail: a RunForward's speed is the interpreter's next run rate, in (0, MaxRunRate] (retail's server sends the
+        // character's rate, about 1 to 4.5; at zero or below a standing object's state velocity is NaN)
+        if (state.ForwardCommand == MotionCommand.RunForward && !MotionChecks.IsRunRateInDomain(state.ForwardSpeed))
+        {
+            throw r.Error($"a RunForward state's speed {state.ForwardSpeed} is not a run rate in (0, {Spatial.InputLimits.MaxRunRate}]");
+        }
+
         r.Align4();
+    }
+
+    // non-retail: a run rate in (0, MaxRunRate] (retail stores any float as my_run_rate), else a format error
+    private static float ReadRunRate(ref RetailDataReader r)
+    {
+        int at = r.Offset;
+        float v = r.ReadFiniteSingle("run rate");
+        if (!MotionChecks.IsRunRateInDomain(v))
+        {
+            throw r.ErrorAt(at, $"run rate {v} is not in (0, {Spatial.InputLimits.MaxRunRate}]");
+        }
+
+        return v;
+    }
+
+    // non-retail: a speed in the motion speeds' domain (InputLimits.MaxMotionSpeed), else a format error
+    private static float ReadSpeed(ref RetailDataReader r, string what)
+    {
+        int at = r.Offset;
+        float v = r.ReadFiniteSingle(what);
+        if (!MotionChecks.IsSpeedInDomain(v))
+        {
+            throw r.ErrorAt(at, $"{what} {v} is beyond ±{Spatial.InputLimits.MaxMotionSpeed}");
+        }
+
+        return v;
     }
 
     // A 16-bit command index, through retail's command_ids table; an index past it is a format error.

@@ -359,31 +359,40 @@ public sealed class AnimatedPartArray : IPartArray, IPartCollision, IAnimationDo
     }
 
     /// <inheritdoc />
+    /// <param name="translucency">Any value: this part array keeps no surface values (a no-op; a client's renderer reads them from its own state).</param>
     public void SetTranslucency(float translucency)
     {
     }
 
     /// <inheritdoc />
+    /// <param name="part">Any part index (a no-op).</param>
+    /// <param name="translucency">Any value: this part array keeps no surface values (a no-op; a client's renderer reads them from its own state).</param>
     public void SetPartTranslucency(uint part, float translucency)
     {
     }
 
     /// <inheritdoc />
+    /// <param name="luminosity">Any value: this part array keeps no surface values (a no-op; a client's renderer reads them from its own state).</param>
     public void SetLuminosity(float luminosity)
     {
     }
 
     /// <inheritdoc />
+    /// <param name="part">Any part index (a no-op).</param>
+    /// <param name="luminosity">Any value: this part array keeps no surface values (a no-op; a client's renderer reads them from its own state).</param>
     public void SetPartLuminosity(uint part, float luminosity)
     {
     }
 
     /// <inheritdoc />
+    /// <param name="diffusion">Any value: this part array keeps no surface values (a no-op; a client's renderer reads them from its own state).</param>
     public void SetDiffusion(float diffusion)
     {
     }
 
     /// <inheritdoc />
+    /// <param name="part">Any part index (a no-op).</param>
+    /// <param name="diffusion">Any value: this part array keeps no surface values (a no-op; a client's renderer reads them from its own state).</param>
     public void SetPartDiffusion(uint part, float diffusion)
     {
     }
