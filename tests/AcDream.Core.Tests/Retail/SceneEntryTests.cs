@@ -89,10 +89,10 @@ public class SceneEntryTests
 
         byte[] bigCount = (byte[])good.Clone();
         BitConverter.TryWriteBytes(bigCount.AsSpan(4), 4u); // 4 spots need 304 bytes, 228 remain
-        AssertFormat(bigCount, "Scene", 8);
+        AssertFormat(bigCount, "Scene", 4); // the error names the count's own offset (issue #33)
 
         // A cut inside the last spot: the count is checked against the bytes before any spot is read.
-        AssertFormat(good.AsSpan(0, 8 + 2 * 76 + 40).ToArray(), "Scene", 8);
+        AssertFormat(good.AsSpan(0, 8 + 2 * 76 + 40).ToArray(), "Scene", 4);
 
         byte[] badRotation = (byte[])good.Clone();
         BitConverter.TryWriteBytes(badRotation.AsSpan(8 + 16), 2f); // w = 2: not a unit quaternion

@@ -155,14 +155,16 @@ public sealed partial class RegionEntry
     // retail: AC1Legacy::PStringBase<char>::UnPack (acclient.c:296508)
     private static string ReadPString(ref RetailDataReader r, string what, bool keep)
     {
+        int lengthAt = r.Offset;
         int length = r.ReadUInt16(what);
         if (length == 0xFFFF)
         {
-            length = r.CheckCount(r.ReadUInt32(what), what, 1);
+            lengthAt = r.Offset;
+            length = r.CheckCount(r.ReadUInt32(what), what, 1, lengthAt);
         }
         else
         {
-            r.CheckCount((uint)length, what, 1);
+            r.CheckCount((uint)length, what, 1, lengthAt);
         }
 
         ReadOnlySpan<byte> chars = r.Rest.Slice(0, length);
