@@ -30,9 +30,11 @@ namespace AcDream.Core.Physics.Input;
 /// </list>
 /// <para>Times are the world's client clock (<see cref="World.PhysicsWorld.CurrentTime"/>, retail <c>Timer::cur_time</c>).
 /// Network messages (retail's movement events) are the client's. Not ported: mouse turning and mouse-look, auto-run, the
-/// side-step hold key, emotes and postures, server control (autonomy levels 0 and 1).</para>
+/// side-step hold key, emotes and postures. Server control (retail <c>controlled_by_server</c>, the autonomy level) is in
+/// <c>PlayerInput.ServerControl.cs</c>: it implements <see cref="Motion.Wire.IPlayerControl"/> for
+/// <see cref="Motion.Wire.ServerMessageHandler.PlayerControl"/>.</para>
 /// </remarks>
-public sealed class PlayerInput
+public sealed partial class PlayerInput
 {
     // Retail MIN_JUMP_EXTENT (acclient_data.h: 0.001).
     internal const float MinJumpExtent = 0.001f;
@@ -227,6 +229,14 @@ public sealed class PlayerInput
                 HandleKeyboardCommand(MotionCommand.SideStepLeft, start);
                 break;
             case MovementKeys.Run:
+                // acclient.c:717262-717275: under server control a release only records the key; a press takes control back.
+                if (_controlledByServer && !start)
+                {
+                    _holdRun = false;
+                    break;
+                }
+
+                TakeControlFromServer();
                 SetHoldRun(start);
                 break;
             case MovementKeys.Jump:
@@ -247,6 +257,16 @@ public sealed class PlayerInput
     // retail: CommandInterpreter::HandleKeyboardCommand (acclient.c:717224), keyboard, client-controlled
     private void HandleKeyboardCommand(MotionCommand cmd, bool start)
     {
+        // acclient.c:717262: while the server controls the player, a release only updates the lists (its move goes on)
+        if (_controlledByServer && !start)
+        {
+            BookkeepCommandAndModifyIfNecessary(ref cmd, ref start);
+            return;
+        }
+
+        // acclient.c:717275: a press takes control back first (stop completely, the held keys apply)
+        TakeControlFromServer();
+        MovementChanged = true;
         if (!BookkeepCommandAndModifyIfNecessary(ref cmd, ref start))
         {
             return;
