@@ -46,7 +46,6 @@ public sealed partial class PlayerInput : IPlayerControl
         if (_autonomyLevel != 0)
         {
             _controlledByServer = true;
-            MovementChanged = true;
         }
     }
 
@@ -55,10 +54,7 @@ public sealed partial class PlayerInput : IPlayerControl
 
     /// <summary>The player was teleported: auto-run stops and the motion is sent again.</summary>
     // retail: CommandInterpreter::PlayerTeleported (acclient.c:716923)
-    public void PlayerTeleported() => MovementChanged = true;
-
-    /// <summary>The motion state changed since the outbound side last sent it (a key, a hand-back, a teleport).</summary>
-    internal bool MovementChanged { get; set; }
+    public void PlayerTeleported() => SendMovementEvent();
 
     /// <summary>The server forced the position: the outbound side sends it at once.</summary>
     internal bool PositionDue { get; set; }
@@ -93,7 +89,6 @@ public sealed partial class PlayerInput : IPlayerControl
         _player.StopInterpolating();
         ApplyHoldRun();
         ApplyHeldMovement();
-        MovementChanged = true;
     }
 
     // retail: CommandInterpreter::ApplyCurrentMovement (acclient.c:717026): the heads of the three lists, or stand.

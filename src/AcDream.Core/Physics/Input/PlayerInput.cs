@@ -238,6 +238,12 @@ public sealed partial class PlayerInput
 
                 TakeControlFromServer();
                 SetHoldRun(start);
+                // acclient.c:717281: the run key's change is sent unless the player stands still
+                if (!_interp.IsStandingStill())
+                {
+                    SendMovementEvent();
+                }
+
                 break;
             case MovementKeys.Jump:
                 if (start)
@@ -266,13 +272,13 @@ public sealed partial class PlayerInput
 
         // acclient.c:717275: a press takes control back first (stop completely, the held keys apply)
         TakeControlFromServer();
-        MovementChanged = true;
         if (!BookkeepCommandAndModifyIfNecessary(ref cmd, ref start))
         {
             return;
         }
 
         MovePlayer(cmd, start);
+        SendMovementEvent();
     }
 
     // retail: CommandInterpreter::BookkeepCommandAndModifyIfNecessary (acclient.c:717498)
@@ -389,6 +395,9 @@ public sealed partial class PlayerInput
         _jumpPending = true;
         // retail: ClientCombatSystem::StartPowerBarBuild (acclient.c:407901)
         _buildStartTime = _player.World.CurrentTime;
+        // non-retail: the charge's MoveToState (the recordings show one, its contact byte with the long-jump bit) is sent
+        // here; retail's send site is in the combat system, not traced
+        SendMovementEvent();
     }
 
     // retail: ClientCombatSystem::DoJump (acclient.c:408145), autonomous
@@ -410,6 +419,10 @@ public sealed partial class PlayerInput
         _jumpPending = false;
         _interp.StandingLongJump = false;
         LastError = _interp.Jump(extent, out _);
+        if (LastError == MotionError.None)
+        {
+            SendJump(extent);
+        }
     }
 
     // retail: ClientCombatSystem::GetPowerBarLevel (acclient.c:407918)
