@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Fixtures.Wire;
+using AcDream.Core.Physics.Input;
 using AcDream.Core.Physics.Motion.Wire;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
@@ -48,5 +49,38 @@ public class ServerMessageAllocationTests
         Window(); // warm: the position manager, the interpolation nodes
         AllocationProbe.AssertSteadyStateAllocatesNothing(Window);
         Assert.Equal((ushort)next, c.GetUpdateTime(PhysicsTimeStamp.Position));
+    }
+
+    // The outbound side: keys every few frames, the world's tick, TakeOutbound each frame (MoveToStates, AutonomousPositions
+    // and a jump's body written into the input's buffers): nothing allocated.
+    [Fact]
+    public void TakeOutbound_KeysAndPositionsEachFrame_SteadyState_AllocatesNothing()
+    {
+        var s = new WalkingPlayerScene(new Vector3(100f, 20f, 0f));
+        var input = new PlayerInput(s.Player);
+        double now = 0;
+        int frame = 0, sent = 0;
+        void Window()
+        {
+            for (int k = 0; k < 60; k++)
+            {
+                switch (frame++ % 40)
+                {
+                    case 0: input.KeyDown(MovementKeys.Forward); break;
+                    case 10: input.KeyDown(MovementKeys.TurnLeft); break;
+                    case 15: input.KeyUp(MovementKeys.TurnLeft); break;
+                    case 25: input.KeyUp(MovementKeys.Forward); break;
+                    case 30: input.KeyDown(MovementKeys.Jump); break;
+                    case 36: input.KeyUp(MovementKeys.Jump); break;
+                }
+
+                s.World.Tick(now += 1.0 / 30.0);
+                sent += input.TakeOutbound() != OutboundMessages.None ? 1 : 0;
+            }
+        }
+
+        Window();
+        AllocationProbe.AssertSteadyStateAllocatesNothing(Window);
+        Assert.True(sent > 6);
     }
 }
