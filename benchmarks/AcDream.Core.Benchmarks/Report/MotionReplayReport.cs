@@ -79,6 +79,15 @@ internal static class MotionReplayReport
         md.AppendLine($"than {RealReplay.MovingSpeed} m/s since its previous pose. The ground is level at the height of the last report (the recordings carry");
         md.AppendLine("no terrain nor buildings), so a body that runs by motion into a wall or a doorway runs on through it.");
         md.AppendLine();
+        md.AppendLine("The UpdatePositions (0xF748) and VectorUpdates (0xF74E) go the same way: each is rebuilt as its body from the recorded");
+        md.AppendLine("columns (the quaternion components its flags omit left out, velocity and placement id where flagged, the four stamps),");
+        md.AppendLine("decoded by `PhysicsMessageDecoder.Decode` and applied through `ServerMessageHandler.HandleMessage` (retail's SmartBox:");
+        md.AppendLine("the instance gate, then `HandleReceivedPosition` / `DoVectorUpdate` with their stamps); in the melee section the monsters'");
+        md.AppendLine("UpdatePositions too. Every figure is the same, digit for digit, as when the reports were parsed from the columns and");
+        md.AppendLine("given to `PhysicsObj.HandleReceivedPosition` directly: the decoded position is the same float for float, the handler's");
+        md.AppendLine("remote branch is that method, and the three VectorUpdates of Ash (its jumps, straight up) move no compared horizontal");
+        md.AppendLine("position.");
+        md.AppendLine();
         AppendTypeCounts(md, data, inv);
         md.AppendLine("| player | samples | its MovementEvents: type 0 / 8 / applied | error, all: all events median / max (m) | type 0 only median / max (m) | interpolation only median / max (m) | moving: samples | moving: all events median / max (m) | moving: type 0 only median / max (m) | moving: interpolation only median / max (m) |");
         md.AppendLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");

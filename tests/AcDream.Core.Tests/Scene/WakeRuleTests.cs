@@ -89,6 +89,7 @@ public class WakeRuleTests
         ["EnterWorld(Position)"] = (null, f => f.Obj.EnterWorld(Near(0.5f))),
         ["GetOrCreateMotionInterpreter()"] = (null, f => f.Obj.GetOrCreateMotionInterpreter()),
         ["GoToLostCell(Position)"] = (null, f => f.Obj.GoToLostCell(Near(0.5f))),
+        ["LeaveWorld()"] = (null, f => f.Obj.LeaveWorld()),
         ["HandleReceivedPosition(Position, UInt16, UInt16, Boolean)"] = (null, f => f.Obj.HandleReceivedPosition(Near(0.5f), 1, 0, true)),
         // A MovementEvent that is applied (newer movement stamp): walk forward.
         ["HandleMovementEvent(MovementEventMessage)"] = (null, f =>

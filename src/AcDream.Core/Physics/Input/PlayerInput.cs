@@ -30,9 +30,11 @@ namespace AcDream.Core.Physics.Input;
 /// </list>
 /// <para>Times are the world's client clock (<see cref="World.PhysicsWorld.CurrentTime"/>, retail <c>Timer::cur_time</c>).
 /// Network messages (retail's movement events) are the client's. Not ported: mouse turning and mouse-look, auto-run, the
-/// side-step hold key, emotes and postures, server control (autonomy levels 0 and 1).</para>
+/// side-step hold key, emotes and postures. Server control (retail <c>controlled_by_server</c>, the autonomy level) is in
+/// <c>PlayerInput.ServerControl.cs</c>: it implements <see cref="Motion.Wire.IPlayerControl"/> for
+/// <see cref="Motion.Wire.ServerMessageHandler.PlayerControl"/>.</para>
 /// </remarks>
-public sealed class PlayerInput
+public sealed partial class PlayerInput
 {
     // Retail MIN_JUMP_EXTENT (acclient_data.h: 0.001).
     internal const float MinJumpExtent = 0.001f;
@@ -230,7 +232,21 @@ public sealed class PlayerInput
                 HandleKeyboardCommand(MotionCommand.SideStepLeft, start);
                 break;
             case MovementKeys.Run:
+                // acclient.c:717262-717275: under server control a release only records the key; a press takes control back.
+                if (_controlledByServer && !start)
+                {
+                    _holdRun = false;
+                    break;
+                }
+
+                TakeControlFromServer();
                 SetHoldRun(start);
+                // acclient.c:717281: the run key's change is sent unless the player stands still
+                if (!_interp.IsStandingStill())
+                {
+                    SendMovementEvent();
+                }
+
                 break;
             case MovementKeys.Jump:
                 if (start)
@@ -250,12 +266,22 @@ public sealed class PlayerInput
     // retail: CommandInterpreter::HandleKeyboardCommand (acclient.c:717224), keyboard, client-controlled
     private void HandleKeyboardCommand(MotionCommand cmd, bool start)
     {
+        // acclient.c:717262: while the server controls the player, a release only updates the lists (its move goes on)
+        if (_controlledByServer && !start)
+        {
+            BookkeepCommandAndModifyIfNecessary(ref cmd, ref start);
+            return;
+        }
+
+        // acclient.c:717275: a press takes control back first (stop completely, the held keys apply)
+        TakeControlFromServer();
         if (!BookkeepCommandAndModifyIfNecessary(ref cmd, ref start))
         {
             return;
         }
 
         MovePlayer(cmd, start);
+        SendMovementEvent();
     }
 
     // retail: CommandInterpreter::BookkeepCommandAndModifyIfNecessary (acclient.c:717498)
@@ -372,6 +398,9 @@ public sealed class PlayerInput
         _jumpPending = true;
         // retail: ClientCombatSystem::StartPowerBarBuild (acclient.c:407901)
         _buildStartTime = _player.World.CurrentTime;
+        // non-retail: the charge's MoveToState (the recordings show one, its contact byte with the long-jump bit) is sent
+        // here; retail's send site is in the combat system, not traced
+        SendMovementEvent();
     }
 
     // retail: ClientCombatSystem::DoJump (acclient.c:408145), autonomous
@@ -391,6 +420,10 @@ public sealed class PlayerInput
 
         FinishJump();
         LastError = _interp.Jump(extent, out _);
+        if (LastError == MotionError.None)
+        {
+            SendJump(extent);
+        }
     }
 
     /// <summary>Ends the jump charge (the power bar empties) and the standing long jump; also the jump cancel, which

@@ -9,7 +9,8 @@ using AcDream.Core.Physics.Motion.Wire;
 namespace AcDream.Core.Tests.Replay.Harness;
 
 /// <summary>One S2C UpdatePosition (0xF748) of any object.</summary>
-public readonly record struct MeleeUpdate(double T, uint Guid, Position Position, bool Grounded, ushort SeqPosition, ushort SeqTeleport);
+public readonly record struct MeleeUpdate(double T, uint Guid, Position Position, bool Grounded, ushort SeqPosition, ushort SeqTeleport,
+                                          byte[] Body);
 
 /// <summary>One S2C MovementEvent (0xF74C) of any object: its body as the wire carries it after the opcode, and its type.</summary>
 public sealed record MeleeMovement(double T, uint Guid, bool Autonomous, byte Type, byte[] Body);
@@ -63,24 +64,19 @@ public sealed class MeleeRecording
 
         foreach (string[] c in Csv.Rows(Path.Combine(dir, "melee-attack-run_s2c_updateposition.csv")))
         {
-            r.Updates.Add(new MeleeUpdate(Csv.D(c[0]), Csv.U(c[1]), new Position(Csv.U(c[3]), Csv.Frame(c, 4)), c[15] == "1",
-                Csv.U16(c[17]), Csv.U16(c[18])));
+            // The body rebuilt from the columns and decoded by the library (WireBodies).
+            byte[] body = WireBodies.UpdatePosition(c);
+            UpdatePositionMessage m = WireBodies.DecodePosition(body);
+            r.Updates.Add(new MeleeUpdate(Csv.D(c[0]), m.ObjectId, m.Position, m.HasContact, m.PositionTimestamp, m.TeleportTimestamp, body));
         }
 
         foreach (string[] c in Csv.Rows(Path.Combine(dir, "melee-attack-run_s2c_movementevent.csv")))
         {
             uint guid = Csv.U(c[1]);
             bool autonomous = c[5] == "1";
-            byte[] data = Convert.FromHexString(c[6]);
             // The body after the opcode: guid, instance, movement and server-control stamps, autonomous byte, pad, data.
-            byte[] body = new byte[MovementEventDecoder.BodyHeaderLength + data.Length];
-            BitConverter.TryWriteBytes(body.AsSpan(0), guid);
-            BitConverter.TryWriteBytes(body.AsSpan(4), Csv.U16(c[2]));
-            BitConverter.TryWriteBytes(body.AsSpan(6), Csv.U16(c[3]));
-            BitConverter.TryWriteBytes(body.AsSpan(8), Csv.U16(c[4]));
-            body[10] = autonomous ? (byte)1 : (byte)0;
-            data.CopyTo(body, MovementEventDecoder.BodyHeaderLength);
-            r.Movements.Add(new MeleeMovement(Csv.D(c[0]), guid, autonomous, data[0], body));
+            byte[] body = WireBodies.MovementEvent(c);
+            r.Movements.Add(new MeleeMovement(Csv.D(c[0]), guid, autonomous, body[MovementEventDecoder.BodyHeaderLength], body));
         }
 
         double last = double.NaN;

@@ -95,6 +95,8 @@ public static class MeleeReplay
             monsters[guid] = m;
         }
 
+        // The monsters' UpdatePositions go through the SmartBox entry point (instance gate, stamps).
+        var handler = new ServerMessageHandler(world);
         var message = new MovementEventMessage();
         var players = new List<MeleePlayerSample>();
         var monsterSamples = new List<MeleeMonsterSample>();
@@ -149,7 +151,7 @@ public static class MeleeReplay
 
                 previous[u.Guid] = reported;
 
-                monster.HandleReceivedPosition(u.Position, u.SeqPosition, u.SeqTeleport, u.Grounded);
+                handler.HandleMessage((uint)PhysicsMessageOpcode.UpdatePosition, u.Body);
             }
 
             world.Tick(now);

@@ -14,8 +14,13 @@ using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Tests.Replay.Harness;
 
-/// <summary>One S2C UpdatePosition (0xF748) of the replayed guid.</summary>
-public readonly record struct RealUpdate(double T, Position Position, bool Grounded, ushort SeqPosition, ushort SeqTeleport);
+/// <summary>One S2C UpdatePosition (0xF748): its body as the wire carried it after the opcode (<see cref="WireBodies.UpdatePosition"/>)
+/// and the fields <see cref="PhysicsMessageDecoder"/> decodes from it.</summary>
+public readonly record struct RealUpdate(double T, Position Position, bool Grounded, ushort SeqPosition, ushort SeqTeleport,
+                                         ushort SeqInstance, byte[] Body);
+
+/// <summary>One S2C VectorUpdate (0xF74E) of the replayed guid: its body after the opcode.</summary>
+public sealed record RealVector(double T, byte[] Body);
 
 /// <summary>One S2C MovementEvent (0xF74C) of the replayed guid: its movement type and its body as the wire carries it after
 /// the opcode (guid, instance, movement and server-control stamps, autonomous byte, pad, then the recorded movement data).</summary>
@@ -36,6 +41,9 @@ public sealed class RealRecording
     /// <summary>Movement events in arrival order.</summary>
     public List<RealMovement> Movements { get; } = new();
 
+    /// <summary>Vector updates (0xF74E) in arrival order.</summary>
+    public List<RealVector> Vectors { get; } = new();
+
     /// <summary>The updates of every other guid, in arrival order (the objects a client around the player knows).</summary>
     public Dictionary<uint, List<RealUpdate>> OtherUpdates { get; } = new();
 
@@ -55,9 +63,10 @@ public sealed class RealRecording
                 continue;
             }
 
-            var frame = new Frame(new Vector3(F(c[4]), F(c[5]), F(c[6])), new Quaternion(F(c[8]), F(c[9]), F(c[10]), F(c[7])));
-            var u = new RealUpdate(t, new Position(U(c[3]), frame), c[15] == "1", (ushort)int.Parse(c[17], CultureInfo.InvariantCulture),
-                (ushort)int.Parse(c[18], CultureInfo.InvariantCulture));
+            // The body rebuilt from the columns and decoded by the library, as a client decodes what it receives.
+            byte[] body = WireBodies.UpdatePosition(c);
+            UpdatePositionMessage m = WireBodies.DecodePosition(body);
+            var u = new RealUpdate(t, m.Position, m.HasContact, m.PositionTimestamp, m.TeleportTimestamp, m.InstanceTimestamp, body);
             if (c[1] == g)
             {
                 r.Updates.Add(u);
@@ -81,15 +90,21 @@ public sealed class RealRecording
             {
                 // The body after the opcode, rebuilt from the recorded columns: every field the wire carries is recorded
                 // (guid, the three stamps, the autonomous byte; the pad is zero), then the movement data bytes as received.
-                byte[] data = Convert.FromHexString(c[6]);
-                byte[] body = new byte[MovementEventDecoder.BodyHeaderLength + data.Length];
-                BitConverter.TryWriteBytes(body.AsSpan(0), guid);
-                BitConverter.TryWriteBytes(body.AsSpan(4), (ushort)int.Parse(c[2], CultureInfo.InvariantCulture));
-                BitConverter.TryWriteBytes(body.AsSpan(6), (ushort)int.Parse(c[3], CultureInfo.InvariantCulture));
-                BitConverter.TryWriteBytes(body.AsSpan(8), (ushort)int.Parse(c[4], CultureInfo.InvariantCulture));
-                body[10] = c[5] == "1" ? (byte)1 : (byte)0;
-                data.CopyTo(body, MovementEventDecoder.BodyHeaderLength);
-                r.Movements.Add(new RealMovement(t, data[0], body));
+                byte[] body = WireBodies.MovementEvent(c);
+                r.Movements.Add(new RealMovement(t, body[MovementEventDecoder.BodyHeaderLength], body));
+            }
+        }
+
+        string vectors = Path.Combine(dir, slug + "_s2c_vectorupdate.csv");
+        if (File.Exists(vectors))
+        {
+            foreach (string[] c in Rows(vectors))
+            {
+                double t = D(c[0]);
+                if (c[1] == g && t <= endTime)
+                {
+                    r.Vectors.Add(new RealVector(t, WireBodies.VectorUpdate(c)));
+                }
             }
         }
 
@@ -240,12 +255,16 @@ public static class RealReplay
         parts.MotionPlayer = new SpeedOnlyMotionPlayer();
         obj.PartArray = parts;
         obj.EnterWorld(first.Position);
+        // The server's UpdatePositions and VectorUpdates go through the SmartBox entry points (instance gate, stamps); the
+        // object holds the recording's instance stamp, as its CreateObject would have set it.
+        var handler = new ServerMessageHandler(world);
+        obj.NewerEvent(PhysicsTimeStamp.Instance, first.SeqInstance);
         var message = new MovementEventMessage();
         var targets = Targets(rec);
         var samples = new List<RealSample>();
         int[] byType = new int[10];
         int[] results = new int[6];
-        int ui = 1, mi = 0, ti = 0;
+        int ui = 1, mi = 0, ti = 0, vi = 0;
         double settleUntil = first.T + SettleTime;
         uint block = first.Position.ObjCellId >> 16;
         while (ti < rec.Truth.Count && rec.Truth[ti].T < first.T)
@@ -267,9 +286,9 @@ public static class RealReplay
                 while (target.Next < target.Updates.Count && target.Updates[target.Next].T <= now)
                 {
                     RealUpdate u = target.Updates[target.Next++];
-                    if (world.GetObjectById(tg) is PhysicsObj t)
+                    if (world.GetObjectById(tg) is not null)
                     {
-                        t.HandleReceivedPosition(u.Position, u.SeqPosition, u.SeqTeleport, u.Grounded);
+                        handler.HandleMessage((uint)PhysicsMessageOpcode.UpdatePosition, u.Body);
                     }
                     else
                     {
@@ -278,6 +297,7 @@ public static class RealReplay
                         created.Weenie = (tg >> 28) == 5 ? RemoteCreatureWeenie.Player : RemoteCreatureWeenie.Creature;
                         created.PartArray = Walkers.OneSphere();
                         created.EnterWorld(u.Position);
+                        created.NewerEvent(PhysicsTimeStamp.Instance, u.SeqInstance);
                     }
                 }
             }
@@ -294,6 +314,11 @@ public static class RealReplay
                 results[(int)obj.HandleMovementEvent(message)]++;
             }
 
+            while (vi < rec.Vectors.Count && rec.Vectors[vi].T <= now)
+            {
+                handler.HandleMessage((uint)PhysicsMessageOpcode.VectorUpdate, rec.Vectors[vi++].Body);
+            }
+
             while (ui < rec.Updates.Count && rec.Updates[ui].T <= now)
             {
                 RealUpdate u = rec.Updates[ui++];
@@ -305,7 +330,7 @@ public static class RealReplay
                 }
 
                 sweep.GroundZ = u.Position.Frame.Origin.Z;
-                obj.HandleReceivedPosition(u.Position, u.SeqPosition, u.SeqTeleport, u.Grounded);
+                handler.HandleMessage((uint)PhysicsMessageOpcode.UpdatePosition, u.Body);
             }
 
             world.Tick(now);
