@@ -55,4 +55,11 @@ public class AnimSequenceBenchmarks
 
         return last;
     }
+
+    // One update of the row (InstructionCounts).
+    internal void OneTickOnce()
+    {
+        _offset = Frame.Identity;
+        _sequence.Update(1.0 / 30.0, ref _offset);
+    }
 }

@@ -19,6 +19,11 @@ public class FrameBenchmarks
     private Vector3 _yaw;
     private Vector3 _p;
 
+    // The single-operation state of the instruction counts (InstructionCounts): each call continues the chain.
+    private Frame _chain;
+    private Vector3 _point;
+    private int _headingStep;
+
     /// <summary>Builds two non-trivial frames.</summary>
     [GlobalSetup]
     public void Setup()
@@ -28,6 +33,8 @@ public class FrameBenchmarks
         _w = new Vector3(0.001f, -0.002f, 0.03f);
         _yaw = new Vector3(0f, 0f, 0.5f / 30f);
         _p = new Vector3(1f, 2f, 3f);
+        _chain = _a;
+        _point = _p;
     }
 
     /// <summary>Frame::combine.</summary>
@@ -119,5 +126,20 @@ public class FrameBenchmarks
         }
 
         return s;
+    }
+
+    // One operation of each row, continuing one chain (InstructionCounts).
+    internal void CombineOnce() => _chain.Combine(_chain, _b);
+
+    internal void GRotateOnce() => _chain.GRotate(_w);
+
+    internal void RotateOnce() => _chain.Rotate(_w);
+
+    internal void LocalToGlobalRoundTripOnce() => _point = _a.GlobalToLocal(_a.LocalToGlobal(_point));
+
+    internal void SetHeadingOnce()
+    {
+        _chain.SetHeading(_headingStep * 0.36f);
+        _headingStep = (_headingStep + 1) % Ops;
     }
 }

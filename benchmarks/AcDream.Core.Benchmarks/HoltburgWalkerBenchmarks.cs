@@ -184,6 +184,13 @@ internal sealed class HoltburgCrowd
         return ticked;
     }
 
+    /// <summary>Runs one world tick (InstructionCounts).</summary>
+    public bool TickOnce()
+    {
+        _now += Dt;
+        return _world.Tick(_now);
+    }
+
     /// <summary>The Holtburg terrain from ACDREAM_TERRAIN_DIR, or a synthetic 3 × 3 of random heights from <paramref name="rnd"/>.</summary>
     public static TerrainWorld LoadHoltburg(Random rnd)
     {

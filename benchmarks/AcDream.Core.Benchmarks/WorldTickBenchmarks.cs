@@ -50,4 +50,11 @@ public class WorldTickBenchmarks
 
         return ticked;
     }
+
+    // One world tick of the row (InstructionCounts).
+    internal bool TickOnce()
+    {
+        _now += Dt;
+        return _world.Tick(_now);
+    }
 }

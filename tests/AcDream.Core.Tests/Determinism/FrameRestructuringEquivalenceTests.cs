@@ -160,6 +160,38 @@ public class FrameRestructuringEquivalenceTests
     }
 
     [Fact]
+    public void RotateWithACachedRotation_MatchesRotate_WhetherTheCacheHitsOrNot()
+    {
+        // The animation sequence's omega step (CSequence::apply_physics) keeps grotate's rotation in an AxisAngleCache, keyed
+        // by the displacement lifted to global axes. Frames and displacements come from small pools so that the lifted
+        // displacement repeats (a hit) about half the time, including a tiny displacement that does not rotate.
+        var rng = new Random(1806);
+        var frames = new Frame[4];
+        for (int k = 0; k < frames.Length; k++)
+        {
+            frames[k] = k < 2 ? Frame.FromHeading(AnyVector(rng), k * 90f) : AnyFrame(rng);
+        }
+
+        var ws = new[] { AnyVector(rng), new Vector3(0f, 0f, 0.5f / 30f), new Vector3(0f, 0f, 1e-5f) };
+        var cache = new AxisAngleCache();
+        int repeats = 0, last = -1;
+        for (int i = 0; i < Cases; i++)
+        {
+            int fi = rng.Next(8) == 0 ? rng.Next(frames.Length) : (last < 0 ? 0 : last / 3);
+            int wi = rng.Next(8) == 0 ? rng.Next(ws.Length) : (last < 0 ? 0 : last % 3);
+            repeats += fi * 3 + wi == last ? 1 : 0;
+            last = fi * 3 + wi;
+            Frame f = frames[fi];
+            Frame g = f;
+            f.Rotate(ws[wi]);
+            g.Rotate(ws[wi], ref cache);
+            Assert.True(ReferenceFrame.From(f).SameBits(g), $"cached rotate case {i}");
+        }
+
+        Assert.True(repeats > Cases / 2, "the cases repeat the displacement");
+    }
+
+    [Fact]
     public void SetHeadingAndSetVectorHeading_MatchTheReference()
     {
         var rng = new Random(1805);

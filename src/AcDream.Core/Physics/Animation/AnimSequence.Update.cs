@@ -263,8 +263,11 @@ public sealed partial class AnimSequence
         float wx = (float)(s * _omega.X);
         float wy = (float)(s * _omega.Y);
         float wz = (float)(s * _omega.Z);
-        frame.Rotate(new Vector3(wx, wy, wz));
+        frame.Rotate(new Vector3(wx, wy, wz), ref _rotation);
     }
+
+    // The axis-angle rotation of the last omega step (Frame::grotate's first half), kept while its displacement repeats.
+    private AxisAngleCache _rotation;
 
     /// <summary>Queues on the hook object each hook of <paramref name="animFrame"/> whose direction is both or
     /// <paramref name="dir"/>, in list order.</summary>

@@ -198,6 +198,14 @@ internal sealed partial class SceneTicker
     /// </summary>
     internal static bool IsIdle(PhysicsObj o)
     {
+        // The motion first: it is what keeps most awake objects awake (every visited object is classified each tick), and
+        // it reads only the object's own fields. The tests are pure, so their order does not change the answer.
+        if (!IsPositiveZero(o._velocity) || o._omega != Vector3.Zero || !IsPositiveZero(o.CachedVelocity)
+            || o._acceleration != Vector3.Zero)
+        {
+            return false;
+        }
+
         if (o.Movement is not null || o.DetectionManager is not null || o.TargetManager is not null
             || o.Hooks is not null || o.PendingAnimHookCount != 0 || (o.Children is not null && o.Children.Count != 0)
             || (o._state & PhysicsState.Hidden) != 0 || o.JumpedThisFrame
@@ -212,12 +220,6 @@ internal sealed partial class SceneTicker
         }
 
         if (o.PartArray is not null && !o.PartArray.IsIdle)
-        {
-            return false;
-        }
-
-        if (!IsPositiveZero(o._velocity) || !IsPositiveZero(o.CachedVelocity) || o._acceleration != Vector3.Zero
-            || o._omega != Vector3.Zero)
         {
             return false;
         }

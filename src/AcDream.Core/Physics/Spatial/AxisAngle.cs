@@ -56,3 +56,37 @@ internal readonly struct AxisAngle
         return true;
     }
 }
+
+/// <summary>
+/// A one-entry cache of <see cref="AxisAngle"/> keyed by the displacement's bits: the rotation is a function of those bits
+/// alone, so a hit gives what <see cref="AxisAngle.TryCreate"/> would (its square root, division, sine and cosine skipped).
+/// An animation's omega applied frame after frame, or an object's constant spin, repeats its displacement.
+/// </summary>
+internal struct AxisAngleCache
+{
+    private int _keyX, _keyY, _keyZ;
+    private bool _filled;
+    private bool _rotates;
+    private AxisAngle _rotation;
+
+    /// <summary><see cref="AxisAngle.TryCreate"/> of <paramref name="w"/>, from the cache when w's bits repeat.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public bool TryGet(Vector3 w, out AxisAngle r)
+    {
+        int x = BitConverter.SingleToInt32Bits(w.X);
+        int y = BitConverter.SingleToInt32Bits(w.Y);
+        int z = BitConverter.SingleToInt32Bits(w.Z);
+        if (!_filled || x != _keyX || y != _keyY || z != _keyZ)
+        {
+            _rotates = AxisAngle.TryCreate(w, out _rotation);
+            _keyX = x;
+            _keyY = y;
+            _keyZ = z;
+            _filled = true;
+        }
+
+        r = _rotation;
+        return _rotates;
+    }
+}
+

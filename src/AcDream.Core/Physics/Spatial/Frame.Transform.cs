@@ -68,6 +68,21 @@ public partial struct Frame
         GRotate(new Vector3(gx, gy, gz));
     }
 
+    /// <summary><see cref="Rotate(Vector3)"/> with grotate's axis-angle rotation taken from <paramref name="cache"/> when the
+    /// lifted displacement repeats: the same bits.</summary>
+    // retail part: Frame::rotate, grotate's first half from a cache (acclient.c line 143690)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal void Rotate(Vector3 w, ref AxisAngleCache cache)
+    {
+        float gx = (float)((double)_m31 * w.Z + (double)_m11 * w.X + (double)_m21 * w.Y);
+        float gy = (float)((double)_m32 * w.Z + (double)_m12 * w.X + (double)_m22 * w.Y);
+        float gz = (float)((double)_m33 * w.Z + (double)_m13 * w.X + (double)_m23 * w.Y);
+        if (cache.TryGet(new Vector3(gx, gy, gz), out AxisAngle r))
+        {
+            GRotate(r);
+        }
+    }
+
     /// <summary>
     /// Rotates by an angular displacement given in GLOBAL axes (radians, e.g. omega * dt): the axis-angle quaternion
     /// (cos θ/2, sin θ/2 · w/θ) is pre-multiplied onto the current quaternion and the result renormalised.
