@@ -211,7 +211,10 @@ public class ServerMessageHandlerTests
     {
         var (world, h) = Scene();
         PhysicsObj me = world.CreateObject(MovementEventBytes.ObjectId);
-        me.PartArray = Walkers.OneSphere(0.5f);
+        // A motion player: without one the event is unpacked but moves nothing (MovementEventResult.NoMotionTable, #33).
+        var body = Walkers.OneSphere(0.5f);
+        body.MotionPlayer = new SpeedOnlyMotionPlayer();
+        me.PartArray = body;
         me.Weenie = new PlayerWeenie();
         Assert.True(me.EnterWorld(ObjectScene.At(100f, 100f)));
         var control = new Control();

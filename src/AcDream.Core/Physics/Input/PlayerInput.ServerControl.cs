@@ -87,7 +87,7 @@ public sealed partial class PlayerInput : IPlayerControl
         _player.LastMoveWasAutonomous = true;
         _player.StopCompletely();
         _player.StopInterpolating();
-        ApplyHoldRun();
+        SetHoldRun(_holdRun);
         ApplyHeldMovement();
     }
 
