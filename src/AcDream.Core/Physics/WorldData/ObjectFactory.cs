@@ -9,6 +9,7 @@ using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Motion.Wire;
 
 namespace AcDream.Core.Physics.WorldData;
 
@@ -18,7 +19,7 @@ namespace AcDream.Core.Physics.WorldData;
 /// level of its degrade table when it names one). The entries are read from the client's <see cref="IRetailDataSource"/>
 /// once and shared by every object made from the same id.
 /// </summary>
-/// <remarks>A client creates a creature or an item from its Setup id with <see cref="MakeObject"/> (dynamic); the
+/// <remarks>A client creates a creature or an item from its Setup id with <see cref="MakeObject(PhysicsWorld, uint, uint, bool)"/> (dynamic); the
 /// <see cref="WorldLoader"/> makes the world's static objects and buildings through the same factory. Not thread-safe.</remarks>
 public sealed class ObjectFactory
 {
@@ -70,6 +71,23 @@ public sealed class ObjectFactory
 
         ObjectModel? model = InitPartArrayModel(dataId, out bool animObject);
         return model is null ? null : Instantiate(world, model, objectId, isDynamic, animObject);
+    }
+
+    /// <summary>
+    /// Makes the object of a server's CreateObject from its physics description: a dynamic object from
+    /// <see cref="PhysicsDesc.SetupId"/> with the message's object id (<see cref="MakeObject(PhysicsWorld, uint, uint, bool)"/>).
+    /// Its signature is <see cref="PhysicsObjectFactory"/>: <c>handler.ObjectFactory = loader.Objects.MakeObject;</c>. The
+    /// handler then applies the rest of the description; a motion player (from <see cref="PhysicsDesc.MotionTableId"/>) and
+    /// a weenie are the client's to add, in its own factory that calls this one.
+    /// </summary>
+    /// <returns>The object, or null (the handler answers <c>NotApplicable</c>) when the Setup or a part's GfxObj is missing
+    /// from the source.</returns>
+    /// <exception cref="ArgumentNullException">An argument is null.</exception>
+    // retail seam: SmartBox::HandleCreateObject (acclient.c:145880) -> CObjectMaint's create slot -> CPhysicsObj::makeObject
+    public PhysicsObj? MakeObject(PhysicsWorld world, uint objectId, PhysicsDesc desc)
+    {
+        ArgumentNullException.ThrowIfNull(desc);
+        return MakeObject(world, desc.SetupId, objectId, isDynamic: true);
     }
 
     /// <summary>The model of <paramref name="dataId"/>, or null when retail's <c>InitPartArrayObject</c> fails.</summary>
