@@ -126,28 +126,8 @@ public class RetailDataFuzzTests
                     b = new byte[rng.Next(0, 400)];
                     rng.NextBytes(b);
                     break;
-                case 1:
-                    b = (byte[])valid.Clone();
-                    for (int k = rng.Next(1, 5); k > 0; k--)
-                    {
-                        b[rng.Next(b.Length)] = (byte)rng.Next(256);
-                    }
-
-                    break;
-                case 2:
-                    b = (byte[])valid.Clone();
-                    int at = rng.Next(b.Length / 4) * 4;
-                    BitConverter.TryWriteBytes(b.AsSpan(at), huge[rng.Next(huge.Length)]);
-                    break;
                 default:
-                    b = (byte[])valid.Clone();
-                    int cut = rng.Next(b.Length);
-                    int len = rng.Next(1, 16);
-                    var spliced = new byte[b.Length + len];
-                    b.AsSpan(0, cut).CopyTo(spliced);
-                    rng.NextBytes(spliced.AsSpan(cut, len));
-                    b.AsSpan(cut).CopyTo(spliced.AsSpan(cut + len));
-                    b = spliced;
+                    b = ByteMutations.Mutate(rng, valid, i % 4, huge);
                     break;
             }
 

@@ -27,7 +27,6 @@ internal static class MutatorCatalog
         // bypasses the object: each still refuses non-finite values (NonFiniteInputsAreRefusedTests) but may desynchronise
         // the part array from its object, which is the client's business.
         ["SimplePartArray.Update(Single, Frame)"] = "engine seam: the object's step calls it with its quantum",
-        ["AnimatedPartArray.Update(Single, Frame)"] = "engine seam: the object's step calls it with its quantum",
         ["AnimatedPartArray.CopyPartFrames(Span`1)"] = "span output (the parts' frames, for drawing): AnimatedPartArrayApiTests",
         ["SimplePartArray.SetCellId(UInt32)"] = "engine seam: the object hands its own cell id",
         ["SimplePartArray.SetFrame(Frame)"] = "engine seam: the object hands its own frame",
