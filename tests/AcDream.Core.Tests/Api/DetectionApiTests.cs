@@ -43,12 +43,13 @@ public class DetectionApiTests
     }
 
     [Fact]
-    public void GlobalDetection_ObjectIdZero_Throws()
+    public void GlobalDetection_ObjectIdZero_IsAccepted()
     {
+        // Object id 0 is retail's global detection (DetectionManager::CheckDetection 327546), now that cells keep voyeurs.
         var (_, dm) = Scene();
-        var ex = Assert.Throws<ArgumentException>(() => dm.CreateDetectionCylsphere(1, 0, 5f));
-        Assert.Equal("objectId", ex.ParamName);
-        Assert.Equal(0, dm.Count);
+        dm.CreateDetectionCylsphere(1, 0, 5f);
+        Assert.True(dm.Contains(1));
+        Assert.Equal(1, dm.Count);
     }
 
     [Fact]

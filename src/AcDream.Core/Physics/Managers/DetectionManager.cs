@@ -14,9 +14,10 @@ namespace AcDream.Core.Physics.Managers;
 /// found by id in the world's object table (<see cref="World.PhysicsWorld.GetObjectById"/>). Set it on its object with
 /// <see cref="PhysicsObj.DetectionManager"/>; an object without one costs nothing per tick.
 /// </summary>
-/// <remarks>Retail's global detection (a cylinder with object id 0: every object in the cells around, through the cells'
-/// voyeur tables) is not supported: the cells here keep no object lists nor voyeur tables (docs/divergences.md).</remarks>
-public sealed class DetectionManager : IDetectionManager
+/// <remarks>A cylinder with object id 0 is retail's global detection: the detector watches, through the cells' voyeur tables,
+/// every object in the loaded cells its radius reaches (the cell list refreshed once it moved 5 m), and each check reports
+/// the objects that entered or left them (DetectionManager.Global.cs; docs/world.md).</remarks>
+public sealed partial class DetectionManager : IDetectionManager
 {
     /// <summary>Least physics time between two checks, seconds: 1.0 (<c>DetectionManager::CheckDetection</c>).</summary>
     internal const double UpdateInterval = 1.0;
@@ -68,9 +69,10 @@ public sealed class DetectionManager : IDetectionManager
     /// world). Not in the retail client (its server creates the cylinders); the fields are retail's <c>DetectionCylsphere</c>.
     /// </summary>
     /// <param name="contextId">The client's id of the cylinder, reported back; unique among this manager's cylinders.</param>
-    /// <param name="objectId">The watched object's id; not 0 (retail's global detection is not supported).</param>
+    /// <param name="objectId">The watched object's id; 0 for global detection (every object entering or leaving the loaded cells
+    /// within <paramref name="radius"/> of the detector, reported at each check).</param>
     /// <param name="radius">Metres, finite and above 0, at most <see cref="Spatial.InputLimits.MaxCoordinate"/>.</param>
-    /// <exception cref="ArgumentException">The radius is not finite, not above 0 or too large, the object id is 0, or
+    /// <exception cref="ArgumentException">The radius is not finite, not above 0 or too large, or
     /// <paramref name="contextId"/> is in use (nothing changed).</exception>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
     public void CreateDetectionCylsphere(uint contextId, uint objectId, float radius)
@@ -78,12 +80,6 @@ public sealed class DetectionManager : IDetectionManager
         if (!float.IsFinite(radius) || !(radius > 0f) || radius > Spatial.InputLimits.MaxCoordinate)
         {
             throw new ArgumentException("The detection radius must be finite, above 0 and at most 65,536 m.", nameof(radius));
-        }
-
-        if (objectId == 0)
-        {
-            throw new ArgumentException("Global detection (object id 0) is not supported: give the watched object's id.",
-                nameof(objectId));
         }
 
         if (Find(contextId) is not null)
@@ -156,8 +152,7 @@ public sealed class DetectionManager : IDetectionManager
         }
         else
         {
-            // Global detection (never created here: CreateDetectionCylsphere refuses object id 0). Retail first runs
-            // UpdateCellList (the cells' voyeur tables, not ported), then reports what the cells sent.
+            UpdateCellList(detcyl);
             ReportGlobalDetection(detcyl.ContextId);
             _numPendingGlobalDetectUpdates = 0;
         }
@@ -294,18 +289,6 @@ public sealed class DetectionManager : IDetectionManager
         }
     }
 
-    /// <summary>Drops the global detection's objects (retail also leaves the cells' voyeur tables, not ported).</summary>
-    // retail: DetectionManager::CleanupGlobalDetection (acclient.c:327456)
-    private void CleanupGlobalDetection()
-    {
-        if (_detectionObjects is not null)
-        {
-            DestroyContents(_detectionObjects);
-            _detectionObjects = null;
-            _numPendingGlobalDetectUpdates = 0;
-        }
-    }
-
     // retail: LongNIHash<DetectionInfo>::destroy_contents (acclient.c:327087)
     private void DestroyContents(Dictionary<uint, DetectionEntry> table)
     {
@@ -315,20 +298,6 @@ public sealed class DetectionManager : IDetectionManager
         }
 
         table.Clear();
-    }
-
-    /// <summary>The detection objects' table of global detection (the hash part of retail
-    /// <c>DetectionManager::InitializeGlobalDetection</c>; its cell part is not ported). For tests of the global path.</summary>
-    // retail part: the detection_objects lines of DetectionManager::InitializeGlobalDetection (acclient.c line 327193)
-    internal bool InitializeGlobalDetectionObjects()
-    {
-        if (_detectionObjects is not null)
-        {
-            return false;
-        }
-
-        _detectionObjects = new Dictionary<uint, DetectionEntry>(32);
-        return true;
     }
 
     /// <summary>Pending entered / left reports of global detection (retail <c>num_pending_global_detect_updates</c>).</summary>

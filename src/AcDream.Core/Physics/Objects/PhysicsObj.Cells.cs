@@ -1,5 +1,7 @@
 // PhysicsObj — cells, parent and children: set_parent, unset_parent, UpdateChild, change_cell, enter_cell, leave_cell.
 using System;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Objects.Parts;
 
@@ -190,7 +192,15 @@ public sealed partial class PhysicsObj
         }
     }
 
-    // retail: CPhysicsObj::enter_cell (acclient.c:318201): nothing happens for an object without a part array.
+    // The cell the object is listed in (retail cell): set by enter_cell, cleared by leave_cell; null when the cell is not
+    // loaded (or the world has no cells).
+    private ObjCell? _cell;
+
+    /// <summary>The cell whose object list holds this object (retail <c>cell</c>), or null.</summary>
+    internal ObjCell? Cell => _cell;
+
+    // retail: CPhysicsObj::enter_cell (acclient.c:318201): nothing happens for an object without a part array. The port
+    // passes the cell id; the cell (for its object list) is the world's loaded cell of that id.
     private void EnterCell(uint cellId)
     {
         if (PartArray is null)
@@ -198,6 +208,8 @@ public sealed partial class PhysicsObj
             return;
         }
 
+        ObjCell? newCell = World.Sweep is RetailSweep sweep ? sweep.Cells.GetVisible(cellId) : null;
+        newCell?.AddObject(this);
         ChildList? children = Children;
         if (children is not null)
         {
@@ -214,6 +226,7 @@ public sealed partial class PhysicsObj
         }
 
         CellId = cellId;
+        _cell = newCell;
     }
 
     // retail: CPhysicsObj::leave_cell (acclient.c:318243)
@@ -224,6 +237,7 @@ public sealed partial class PhysicsObj
             return;
         }
 
+        _cell?.RemoveObject(this);
         ChildList? children = Children;
         if (children is not null)
         {
@@ -233,7 +247,36 @@ public sealed partial class PhysicsObj
             }
         }
 
+        _cell = null;
         CellId = 0;
+    }
+
+    /// <summary>The object's cell was loaded again (a new cell of the same id): it leaves the old cell's object list and
+    /// enters the new one's, its position and cell id unchanged (retail: release_objects sends it to the lost cell,
+    /// init_objects brings it back).</summary>
+    internal void RelistInCell()
+    {
+        uint cellId = CellId;
+        if (cellId == 0 || Parent is not null)
+        {
+            return;
+        }
+
+        ObjCell? now = World.Sweep is RetailSweep sweep ? sweep.Cells.GetVisible(cellId) : null;
+        if (now == _cell)
+        {
+            return;
+        }
+
+        LeaveCell();
+        EnterCell(cellId);
+    }
+
+    /// <summary>The object leaves the world for good: it leaves its cell's object list (its voyeurs told it left).</summary>
+    internal void LeaveCellOnRemove()
+    {
+        _cell?.RemoveObject(this);
+        _cell = null;
     }
 
     private void SetChildrenCellId(uint id)

@@ -35,6 +35,7 @@ public sealed partial class PhysicsWorld
             }
 
             o.Touch();
+            o.RelistInCell();
             o.RehomeShadows(sweep);
         }
     }

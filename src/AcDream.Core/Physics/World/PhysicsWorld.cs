@@ -103,6 +103,12 @@ public sealed partial class PhysicsWorld
             // The old seam may have released cells the new one shares (a WorldCells' terrain): claim them again.
             value.AttachTo(this);
             _sweep = value;
+            // The objects' cells (their object lists) are now the new seam's cells of the same ids.
+            VisitOrderList.Cursor cursor = _objects.Start();
+            while (_objects.MoveNext(ref cursor, out PhysicsObj o))
+            {
+                o.RelistInCell();
+            }
         }
     }
 
@@ -251,6 +257,7 @@ public sealed partial class PhysicsWorld
         }
 
         obj.RemoveShadowsFromCells();
+        obj.LeaveCellOnRemove();
         obj.ClearOnRemove();
         obj.ClearHooksOnRemove();
         if (_player == obj)
