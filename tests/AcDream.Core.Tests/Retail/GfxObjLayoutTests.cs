@@ -1,8 +1,14 @@
-using System;
 using System.Buffers.Binary;
 using System.Numerics;
+using System;
+using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Format;
+using AcDream.Core.Physics.Objects.Parts;
+using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.WorldData;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;
@@ -157,7 +163,8 @@ public class GfxObjLayoutTests
         int tree = 46;
         U32(b, tree, 0x42504F4C);                  // 'BPOL'
         F32(b, tree + 12, 1f);                     // plane n (0, 0, 1), d 0
-        F32(b, tree + 32, 2f);                     // sphere @66: centre 0, radius 2 @78
+        F32(b, tree + 28, 1.5f);                   // sphere @66: centre (0, 0, 1.5) (z @74), radius 2 @78
+        F32(b, tree + 32, 2f);
         U32(b, tree + 36, 1);                      // polygon count @82
         int degradeAt = tree + 42;                 // polygon 0 (u16) @86; degrade @88
         var bytes = new byte[degradeAt + 4];
@@ -167,5 +174,16 @@ public class GfxObjLayoutTests
         Assert.Equal(new uint[] { 0x080001B8 }, g.SurfaceIds.ToArray());
         Assert.Equal(1, g.DrawingPolygonCount);
         Assert.Equal(Degrade, g.DegradeId);
+        // CGfxObj::Serialize keeps drawing_sphere = BSPTREE::GetSphere(drawing_bsp): the root's sphere, read where it stands.
+        Assert.Equal(new Sphere(new Vector3(0f, 0f, 1.5f), 2f), g.DrawingSphere);
+
+        // CSetup::makeSimpleSetup (acclient.c:334455): no physics sphere (offset 116 of the GfxObj is null), so the sorting
+        // sphere is the drawing sphere (offset 144).
+        byte[] noDegrade = bytes[..degradeAt];
+        U32(noDegrade, 4, 2u);
+        var source = new DictionarySource();
+        source.Entries[0x010005E8] = noDegrade;
+        PhysicsObj o = new ObjectFactory(source).MakeObject(new PhysicsWorld(), 0x010005E8)!;
+        Assert.Equal(new Sphere(new Vector3(0f, 0f, 1.5f), 2f), ((SimplePartArray)o.PartArray!).SortingSphere);
     }
 }

@@ -63,6 +63,11 @@ public sealed class GfxObjEntry
     /// <c>physics_sphere</c>.</summary>
     public Sphere? PhysicsSphere => PhysicsBsp?.Sphere;
 
+    /// <summary>The drawing sphere: the drawing BSP's root sphere (retail <c>drawing_sphere</c> = <c>BSPTREE::GetSphere</c>
+    /// of the drawing tree, acclient.c CGfxObj::Serialize), or null when the entry has no drawing tree or its root stores no
+    /// sphere. <c>CSetup::makeSimpleSetup</c> falls back to it for a GfxObj without a physics sphere.</summary>
+    internal Sphere? DrawingSphere { get; private init; }
+
     /// <summary>The sort centre. Retail: <c>sort_center</c>.</summary>
     public Vector3 SortCenter { get; }
 
@@ -129,13 +134,20 @@ public sealed class GfxObjEntry
         r.Structure = "CGfxObj";
         Vector3 sortCenter = SerializeVector3(ref r);
         int drawingCount = 0;
+        Sphere? drawingSphere = null;
         if ((flags & HasDrawingFlag) != 0)
         {
             r.Structure = "CPolygon";
             int drawingAt = r.Offset;
             drawingCount = r.ReadCompressedCount("drawing polygon count", 12);
             SerializePolygons(ref r, drawingCount, vertices.Length, drawingAt);
-            SerializeBsp(ref r, BspKind.Drawing, [], drawingCount, out _);
+            SerializeBsp(ref r, BspKind.Drawing, [], drawingCount, out int drawingSphereAt);
+            if (drawingSphereAt >= 0)
+            {
+                // The root's sphere, already read and checked by the tree's unpack, read again where it stands.
+                var at = new RetailDataReader(r.From(drawingSphereAt), "BSP");
+                drawingSphere = Sphere.UnPack(ref at, "drawing sphere");
+            }
         }
 
         r.Structure = "CGfxObj";
@@ -145,7 +157,10 @@ public sealed class GfxObjEntry
             degrade = r.ReadUInt32("degrade id");
         }
 
-        return new GfxObjEntry(id, flags, surfaces, vertices, physicsPolys, physicsBsp, sortCenter, degrade, drawingCount);
+        return new GfxObjEntry(id, flags, surfaces, vertices, physicsPolys, physicsBsp, sortCenter, degrade, drawingCount)
+        {
+            DrawingSphere = drawingSphere,
+        };
     }
 
     // The vertex array through its own unpack.

@@ -212,4 +212,7 @@ internal ref struct RetailDataReader
 
     /// <summary>The bytes not yet read, without consuming them.</summary>
     public readonly ReadOnlySpan<byte> Rest => _data.Slice(_offset);
+
+    /// <summary>The entry's bytes from <paramref name="offset"/> on (a field already read, read again where it stands).</summary>
+    public readonly ReadOnlySpan<byte> From(int offset) => _data.Slice(offset);
 }

@@ -253,13 +253,12 @@ public sealed class ObjectFactory
         _modelMissing.TryGetValue(dataId, out uint[]? ids) ? ids : (_modelMissing.TryGetValue(dataId | 0x02000000u, out ids) ? ids : []);
 
     /// <summary>One part, the GfxObj itself, at placement key 0 (the identity); the sorting sphere is the GfxObj's physics
-    /// sphere (retail falls back to its drawing sphere, which <see cref="GfxObjEntry"/> does not keep: a GfxObj without
-    /// physics has no sorting sphere here, and nothing of it collides or is listed by it).</summary>
+    /// sphere, else its drawing sphere (the drawing tree's root sphere), else none.</summary>
     // retail: CSetup::makeSimpleSetup (acclient.c:334455)
     private ObjectModel? MakeSimpleSetup(uint gfxObjId)
     {
         GfxObjEntry? root = GetGfxObj(gfxObjId);
-        Sphere sorting = root?.PhysicsSphere ?? default;
+        Sphere sorting = root?.PhysicsSphere ?? root?.DrawingSphere ?? default;
         var placement = new Dictionary<uint, Frame[]> { [0] = [Frame.Identity] };
         var shape = new SetupPhysics(ReadOnlySpan<Sphere>.Empty, ReadOnlySpan<CylSphere>.Empty, 0f, 0f, 0f, 0f);
         return InitParts(gfxObjId, [gfxObjId], ReadOnlySpan<Vector3>.Empty, placement, shape, sorting, 0, 0, 0);
