@@ -82,6 +82,13 @@ public class WorldLoaderSceneryTests
     }
 
     [Fact]
+    public void TheRegionId_IsDerethsPortalEntry()
+    {
+        // Region entries are 0x13xxxxxx in the portal file; Dereth, the world of the data in ../shared, is 0x13000000.
+        Assert.Equal(0x13000000u, WorldLoader.DerethRegionId);
+    }
+
+    [Fact]
     public void WithoutARegion_TheBlockHasNoScenery()
     {
         PhysicsWorld world = World(out _);

@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Terrain;
 
 namespace AcDream.Core.Physics.WorldData;
 
@@ -194,12 +195,16 @@ public sealed partial class WorldLoader
 
     // The block's land cell under a block-local origin, or null when it lies outside the block.
     // retail: LandDefs::adjust_to_outside (acclient.c:467433) then CLandBlock::get_landcell (acclient.c:352097)
-    private static LandCell? GetLandCell(LoadedBlock b, Vector3 origin)
+    private static LandCell? GetLandCell(LoadedBlock b, Vector3 origin) =>
+        GetLandCell(b.Pending.LandBlock, b.Pending.BlockId, origin);
+
+    // The same, for a block read but not yet in the world.
+    private static LandCell? GetLandCell(LandBlock landBlock, uint blockId, Vector3 origin)
     {
-        uint cellId = b.Pending.BlockId;
+        uint cellId = blockId;
         Vector3 loc = origin;
         bool ok = LandDefs.AdjustToOutside(ref cellId, ref loc);
-        return b.Pending.LandBlock.GetLandCell(ok ? cellId : 0);
+        return landBlock.GetLandCell(ok ? cellId : 0);
     }
 
     // retail: CLandBlock::destroy_static_objects (acclient.c:351930): each leaves the world and is deleted

@@ -1,9 +1,8 @@
 using System;
 using System.Collections.Generic;
-using System.Numerics;
+using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Data;
 using AcDream.Core.Physics.Scenery;
-using AcDream.Core.Physics.Spatial;
 using AcDream.Core.Physics.Terrain;
 
 namespace AcDream.Core.Physics.WorldData;
@@ -45,12 +44,10 @@ public sealed partial class WorldLoader
         {
             foreach (BuildingInfo b in info.Buildings)
             {
-                uint cellId = block;
-                Vector3 loc = b.Frame.Origin;
-                if (Objects.InitPartArrayModel(b.ModelId, out _) is not null && LandDefs.AdjustToOutside(ref cellId, ref loc)
-                    && LandDefs.BlockIdOf(cellId) == LandDefs.BlockIdOf(block))
+                if (Objects.InitPartArrayModel(b.ModelId, out _) is not null
+                    && GetLandCell(landBlock, block, b.Frame.Origin) is LandCell cell)
                 {
-                    (buildingCells ??= new HashSet<uint>()).Add(cellId);
+                    (buildingCells ??= new HashSet<uint>()).Add(cell.Id);
                 }
             }
         }
