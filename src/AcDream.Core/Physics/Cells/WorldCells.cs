@@ -35,18 +35,27 @@ public sealed class WorldCells : ICellSource
 
     /// <summary>Adds (or replaces) an indoor cell.</summary>
     /// <remarks>Objects of the world these cells serve that stand in the cell, or whose shadows reach into it, are listed in the
-    /// new cell (their shadows leave a replaced cell); positions and cells are kept. Call between ticks (docs/stability.md,
+    /// new cell (their shadows leave a replaced cell); positions and cells are kept. Objects lost in the cell come back, placed
+    /// again where they were (retail <c>CObjectMaint::InitObjCell</c>). Call between ticks (docs/stability.md,
     /// "Landblocks changing under objects").</remarks>
     /// <exception cref="ArgumentNullException"><paramref name="cell"/> is null.</exception>
     /// <exception cref="InvalidOperationException">Called from a callback inside the tick of the world these cells serve;
     /// nothing changes.</exception>
-    public void AddEnvCell(EnvCell cell)
+    public void AddEnvCell(EnvCell cell) => AddEnvCell(cell, initObjects: true);
+
+    /// <summary>Adds (or replaces) an indoor cell; with <paramref name="initObjects"/> the objects lost in it come back at
+    /// once, else the caller brings them back later (<see cref="PhysicsWorld.InitObjCell"/>).</summary>
+    internal void AddEnvCell(EnvCell cell, bool initObjects)
     {
         ArgumentNullException.ThrowIfNull(cell);
         ThrowIfOwnerTicking();
         _envCells[cell.CellId] = cell;
         // non-retail: objects re-homed into the new cell (retail never swaps a cell under an object)
         Owner?.RehomeObjectsIn(cell.CellId, 0xFFFFFFFFu);
+        if (initObjects)
+        {
+            Owner?.InitObjCell(cell.CellId);
+        }
     }
 
     /// <summary>Removes an indoor cell; false when it was not loaded.</summary>

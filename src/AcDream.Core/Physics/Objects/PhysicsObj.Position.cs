@@ -415,10 +415,29 @@ public sealed partial class PhysicsObj
     {
         Touch();
         CutPose();
+        // retail: CPhysicsObj::prepare_to_leave_visibility (acclient.c:319195), its cell and lost-cell lines
         RemoveShadowsFromCells();
+        World.RemoveFromLostCell(this);
         LeaveCell();
         // The engine's own lost positions can be outside the domain (a sweep past the world edge): stored unchecked.
         StorePositionInternal(p);
+        World.GotoLostCell(this, _position.ObjCellId);
         _transientState &= ~TransientState.Active;
     }
+
+    /// <summary>The object's lost cell was loaded: it is placed again at its stored position, sliding, its clock restarted.
+    /// True when that placement failed.</summary>
+    // retail: CPhysicsObj::reenter_visibility (acclient.c:323395), with prepare_to_enter_world (acclient.c:319217)
+    internal bool ReenterVisibility()
+    {
+        Touch();
+        UpdateTime = World.CurrentTime;
+        World.RemoveFromLostCell(this);
+        return World.Sweep.SetPosition(this, _position, SetPositionFlags.Placement | SetPositionFlags.Slide) != SetPositionError.Ok;
+    }
+
+    /// <summary>The object leaves visibility (its cell is released): it leaves its cell and shadows, keeps its position and
+    /// waits in the lost cell of its position's cell until that cell is loaded again.</summary>
+    // retail: CPhysicsObj::leave_visibility (acclient.c:321417)
+    internal void LeaveVisibility() => GoToLostCellInternal(_position);
 }

@@ -164,6 +164,31 @@ public sealed partial class PhysicsObj
         }
     }
 
+    /// <summary>True when the object is in a cell and has shadows, each in a loaded cell (none was made for a cell that was
+    /// not loaded).</summary>
+    // retail: CPhysicsObj::is_completely_visible (acclient.c:318473)
+    internal bool IsCompletelyVisible
+    {
+        get
+        {
+            if (_cell is null || NumShadowObjects == 0)
+            {
+                return false;
+            }
+
+            ReadOnlySpan<ShadowObj> shadows = ShadowObjects;
+            for (int i = 0; i < shadows.Length; i++)
+            {
+                if (shadows[i].Cell is null)
+                {
+                    return false;
+                }
+            }
+
+            return true;
+        }
+    }
+
     /// <summary>True when one of the object's shadows was made for a cell whose id, masked by <paramref name="mask"/>, is
     /// <paramref name="id"/> (a landblock: mask <c>0xFFFF0000</c>; one cell: mask <c>0xFFFFFFFF</c>), loaded or not.</summary>
     internal bool HasShadowIn(uint id, uint mask)

@@ -122,6 +122,13 @@ public sealed partial class PhysicsObj
 
         try
         {
+            // retail: SetPositionInternal (acclient.c:323034) calls prepare_to_enter_world for an object in no cell; its
+            // lost-cell line
+            if (_cell is null)
+            {
+                World.RemoveFromLostCell(this);
+            }
+
             t.InitObject(this, ObjectInfoState.None);
             InitSpheres(t);
             Position p = pos;

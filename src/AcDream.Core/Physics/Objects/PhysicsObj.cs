@@ -66,6 +66,9 @@ public sealed partial class PhysicsObj
     /// <summary>True from creation until the object is removed from its world.</summary>
     internal bool InWorld { get; set; }
 
+    /// <summary>The next object of the lost cell this one waits in (the world's lost-cell table chains them), or null.</summary>
+    internal PhysicsObj? LostNext { get; set; }
+
     /// <summary>True once <see cref="PhysicsWorld.RemoveObject"/> took the object out of its world (for good): a step in
     /// progress stops, and the object never lists itself in a cell again.</summary>
     internal bool RemovedFromWorld { get; set; }

@@ -44,11 +44,18 @@ public sealed partial class TerrainWorld : ICellSource
     /// <summary>Adds a built landblock, replacing any landblock already at its place.</summary>
     /// <remarks>Objects of the world these cells serve that stand in the block, or whose shadows reach into it, are listed in
     /// the new cells (their shadows leave a replaced block's old cells); their positions, cells and contact state are kept, so
-    /// terrain that changed height under a resting object is met at its next move. Call between ticks.</remarks>
+    /// terrain that changed height under a resting object is met at its next move. Objects lost in the block's cells (their
+    /// block was removed, or they were placed there while it was not loaded) come back: each is placed again at its stored
+    /// position, sliding (retail <c>CObjectMaint::InitObjCell</c>). Call between ticks.</remarks>
     /// <exception cref="ArgumentNullException"><paramref name="block"/> is null.</exception>
     /// <exception cref="InvalidOperationException">Called from a callback inside the tick of the world these cells serve;
     /// nothing changes.</exception>
-    public void AddLandBlock(LandBlock block)
+    public void AddLandBlock(LandBlock block) => AddLandBlock(block, initObjects: true);
+
+    /// <summary>Adds a built landblock; with <paramref name="initObjects"/> the objects lost in its cells come back at once,
+    /// else the caller brings them back later (the world loader, after the block's static objects:
+    /// <c>LScape::grab_visible_cells</c>' second pass).</summary>
+    internal void AddLandBlock(LandBlock block, bool initObjects)
     {
         ArgumentNullException.ThrowIfNull(block);
         ThrowIfOwnerTicking();
@@ -61,6 +68,10 @@ public sealed partial class TerrainWorld : ICellSource
         _blocks[i] = block;
         // non-retail: objects re-homed into the new cells (retail never swaps the cells under an object)
         OwnerWorld?.RehomeObjectsIn(BlockPrefix(block.BlockX, block.BlockY), 0xFFFF0000u);
+        if (initObjects)
+        {
+            OwnerWorld?.InitLandBlockObjCells(BlockPrefix(block.BlockX, block.BlockY));
+        }
     }
 
     /// <summary>Removes the landblock that contains <paramref name="cellOrBlockId"/>; false when none was loaded.</summary>
@@ -70,7 +81,8 @@ public sealed partial class TerrainWorld : ICellSource
     /// <remarks>Objects of the world these cells serve that stand in one of the block's outdoor cells leave the world, as
     /// retail's lost cell: <see cref="Objects.PhysicsObj.CellId"/> 0, no shadows, their last position kept, not simulated
     /// until placed again (<see cref="Objects.PhysicsObj.EnterWorld"/>, <see cref="Objects.PhysicsObj.SetPosition"/> or a
-    /// server report). They remain the world's objects. Objects elsewhere whose shadows reached into the block keep only
+    /// server report) or until the block is added again, which places them back where they were. They remain the world's
+    /// objects. Objects elsewhere whose shadows reached into the block keep only
     /// their shadows in cells still loaded. Indoor cells are not part of a landblock here: objects in them stay. Call between
     /// ticks.</remarks>
     /// <exception cref="InvalidOperationException">Called from a callback inside the tick of the world these cells serve;

@@ -257,6 +257,8 @@ public sealed partial class PhysicsWorld
         }
 
         obj.RemoveShadowsFromCells();
+        // retail: CPhysicsObj::leave_world (acclient.c:322653) -> CObjectMaint::RemoveFromLostCell
+        RemoveFromLostCell(obj);
         obj.LeaveCellOnRemove();
         obj.ClearOnRemove();
         obj.ClearHooksOnRemove();

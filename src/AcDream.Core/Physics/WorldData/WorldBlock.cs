@@ -13,8 +13,9 @@ namespace AcDream.Core.Physics.WorldData;
 public sealed class WorldBlock
 {
     internal WorldBlock(uint blockId, LandBlock landBlock, LandBlockInfoEntry? info, EnvCell[] envCells, List<WorldObject> objects,
-        uint[] missingIds)
+        uint[] missingIds, bool outdoors)
     {
+        Outdoors = outdoors;
         BlockId = blockId;
         LandBlock = landBlock;
         Info = info;
@@ -26,8 +27,13 @@ public sealed class WorldBlock
     /// <summary>The landblock id (0xXXYYFFFF).</summary>
     public uint BlockId { get; }
 
-    /// <summary>The terrain now in the world.</summary>
+    /// <summary>The block's terrain: in the world when <see cref="Outdoors"/>.</summary>
     public LandBlock LandBlock { get; }
+
+    /// <summary>True for a block built with its landscape (terrain, buildings, static objects, scenery and indoor cells);
+    /// false for a dungeon's interior, built by the <see cref="Landscape"/> without its landscape (indoor cells and their
+    /// static objects only), as retail's visible-cell table holds a dungeon.</summary>
+    public bool Outdoors { get; }
 
     /// <summary>The block's info entry (0xXXYYFFFE), or null when it has none.</summary>
     public LandBlockInfoEntry? Info { get; }

@@ -49,6 +49,13 @@ public sealed partial class WorldLoader
         Region = ReadRegion(source);
     }
 
+    /// <summary>The landscape that decides which blocks this door holds, or null (the client loads and unloads blocks).</summary>
+    internal Landscape? Landscape { get; set; }
+
+    internal PhysicsWorld World => _world;
+
+    internal IRetailDataSource Source => _source;
+
     /// <summary>The factory the door makes objects with (a client makes creatures and items with it too).</summary>
     public ObjectFactory Objects { get; }
 
@@ -75,7 +82,8 @@ public sealed partial class WorldLoader
     /// cells need (0xXXYYFFFF, 0xXXYYFFFE, an indoor cell, an environment) is missing from the source; nothing has been
     /// added. (A missing Setup or GfxObj only fails its object: <see cref="WorldBlock.MissingIds"/>.)</exception>
     /// <exception cref="RetailDataFormatException">An entry's bytes are bad; nothing has been added.</exception>
-    /// <exception cref="InvalidOperationException">Called from inside a tick of the world; nothing has been added.</exception>
+    /// <exception cref="InvalidOperationException">Called from inside a tick of the world, or the door belongs to a
+    /// <see cref="WorldData.Landscape"/> (which decides the blocks); nothing has been added.</exception>
     public IReadOnlyList<WorldBlock> Load(params uint[] blockIds)
     {
         ArgumentNullException.ThrowIfNull(blockIds);
@@ -83,6 +91,8 @@ public sealed partial class WorldLoader
         {
             throw new InvalidOperationException("The world cannot be built from inside its tick.");
         }
+
+        ThrowIfLandscape();
 
         // Read everything first: a bad or missing entry throws before the world changes.
         var pending = new PendingBlock[blockIds.Length];
@@ -100,34 +110,22 @@ public sealed partial class WorldLoader
                 throw new ArgumentException($"Landblock 0x{block:X8} is repeated or already loaded.", nameof(blockIds));
             }
 
-            pending[i] = Read(block);
+            pending[i] = Read(block, outdoors: true);
         }
 
-        // Now change the world: the terrain and cells of every block, so that shadows reach across block edges.
-        foreach (PendingBlock p in pending)
-        {
-            _cells.Terrain.AddLandBlock(p.LandBlock);
-            foreach (EnvCell c in p.EnvCells)
-            {
-                _cells.AddEnvCell(c);
-            }
-        }
-
-        var result = new WorldBlock[pending.Length];
+        // Now change the world: the terrain and cells of every block, so that shadows reach across block edges; then
+        // LScape::grab_visible_cells' two passes.
         var loaded = new LoadedBlock[pending.Length];
         for (int i = 0; i < pending.Length; i++)
         {
-            loaded[i] = new LoadedBlock(pending[i]);
-            _blocks.Add(pending[i].BlockId, loaded[i]);
-            InitBuildings(loaded[i]);
+            loaded[i] = AddCells(pending[i]);
         }
 
+        GrabVisibleCells(loaded);
+        var result = new WorldBlock[pending.Length];
         for (int i = 0; i < pending.Length; i++)
         {
-            InitStaticObjs(loaded[i]);
-            InitEnvCellStatics(loaded[i]);
-            PendingBlock p = pending[i];
-            result[i] = new WorldBlock(p.BlockId, p.LandBlock, p.Info, p.EnvCells, loaded[i].Objects, loaded[i].Missing.ToArray());
+            result[i] = loaded[i].Block!;
         }
 
         return result;
@@ -138,7 +136,8 @@ public sealed partial class WorldLoader
     /// buildings leave their cells, then its indoor cells and terrain go (objects standing on them go to the lost cell).
     /// </summary>
     /// <returns>False when this door has not loaded the block.</returns>
-    /// <exception cref="InvalidOperationException">Called from inside a tick of the world; nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">Called from inside a tick of the world, or the door belongs to a
+    /// <see cref="WorldData.Landscape"/>; nothing changes.</exception>
     // retail: CLandBlock::Destroy (acclient.c:351958)
     public bool Unload(uint blockId)
     {
@@ -147,124 +146,22 @@ public sealed partial class WorldLoader
             throw new InvalidOperationException("The world cannot be changed from inside its tick.");
         }
 
+        ThrowIfLandscape();
         uint block = LandDefs.BlockIdOf(blockId);
-        if (!_blocks.Remove(block, out LoadedBlock? b))
+        if (!_blocks.TryGetValue(block, out LoadedBlock? b) || b.Interior)
         {
             return false;
         }
 
-        DestroyStaticObjects(b);
-        DestroyBuildings(b);
-        foreach (EnvCell c in b.Pending.EnvCells)
-        {
-            _cells.RemoveEnvCell(c.CellId);
-        }
-
-        _cells.Terrain.RemoveLandBlock(block);
+        Release(b);
         return true;
     }
 
-    // One block's entries, read and unpacked, with the shape of every object it will make.
-    private PendingBlock Read(uint block)
+    private void ThrowIfLandscape()
     {
-        LandBlockEntry land = LandBlockEntry.UnPack(Entry(block));
-        Expect("CLandBlock", land.Id, block);
-        LandBlock landBlock = land.ToLandBlock(_cells.Terrain.HeightTable);
-        LandBlockInfoEntry? info = null;
-        var envCells = new List<EnvCell>();
-        var envEntries = new List<EnvCellEntry>();
-        if (land.HasInfo)
+        if (Landscape is not null)
         {
-            uint infoId = (block & 0xFFFF0000u) | 0xFFFEu;
-            info = LandBlockInfoEntry.UnPack(Entry(infoId));
-            Expect("CLandBlockInfo", info.Id, infoId);
-            var environments = new Dictionary<uint, EnvironmentEntry>();
-            for (int i = 0; i < info.NumCells; i++)
-            {
-                EnvCellEntry cell = EnvCellEntry.UnPack(Entry(info.CellId(i)));
-                Expect("CEnvCell", cell.Id, info.CellId(i), 8);
-                if (!environments.TryGetValue(cell.EnvironmentId, out EnvironmentEntry? env))
-                {
-                    env = EnvironmentEntry.UnPack(Entry(cell.EnvironmentId));
-                    Expect("CEnvironment", env.Id, cell.EnvironmentId);
-                    environments.Add(cell.EnvironmentId, env);
-                }
-
-                envCells.Add(cell.ToEnvCell(env));
-                envEntries.Add(cell);
-            }
-
-            // Every object's shape, so that a bad Setup or GfxObj throws now (a missing one fails its object later).
-            foreach (BuildingInfo b in info.Buildings)
-            {
-                Objects.InitPartArrayModel(b.ModelId, out _);
-            }
-
-            foreach (StaticObjectInfo o in info.Objects)
-            {
-                Objects.InitPartArrayModel(o.Id, out _);
-            }
-
-            foreach (EnvCellEntry c in envEntries)
-            {
-                foreach (StaticObjectInfo o in c.StaticObjects)
-                {
-                    Objects.InitPartArrayModel(o.Id, out _);
-                }
-            }
+            throw new InvalidOperationException("This door belongs to a Landscape, which loads and releases its blocks.");
         }
-
-        IReadOnlyList<SceneryItem> scenery = ScenerySource is not null
-            ? ScenerySource(block, landBlock) ?? Array.Empty<SceneryItem>()
-            : RegionScenery(block, landBlock, info);
-        foreach (SceneryItem s in scenery)
-        {
-            // non-retail: a placement outside the library's domains is refused before the world changes
-            if (!InputLimits.IsScaleInDomain(s.Scale) || !s.Frame.IsValid() || !Spatial.VectorMath.IsFinite(s.Frame.Origin))
-            {
-                throw new ArgumentException($"Scenery 0x{s.ObjectId:X8} of block 0x{block:X8} has a scale outside [0.01, 100] or a bad frame.",
-                    nameof(ScenerySource));
-            }
-
-            Objects.InitPartArrayModel(s.ObjectId, out _);
-        }
-
-        return new PendingBlock(block, landBlock, info, envCells.ToArray(), envEntries.ToArray(), scenery);
-    }
-
-    // An entry whose own id is not the id it was asked for is not that entry.
-    private static void Expect(string structure, uint got, uint asked, int offset = 0)
-    {
-        if (got != asked)
-        {
-            throw new RetailDataFormatException(structure, offset, $"the entry asked for as 0x{asked:X8} holds 0x{got:X8}");
-        }
-    }
-
-    private ReadOnlySpan<byte> Entry(uint id)
-    {
-        if (!_source.TryGetEntry(id, out ReadOnlyMemory<byte> bytes))
-        {
-            throw new ArgumentException($"The data source holds no entry 0x{id:X8}, which the landblock needs.", "source");
-        }
-
-        return bytes.Span;
-    }
-
-    private sealed record PendingBlock(uint BlockId, LandBlock LandBlock, LandBlockInfoEntry? Info, EnvCell[] EnvCells,
-        EnvCellEntry[] EnvEntries, IReadOnlyList<SceneryItem> Scenery);
-
-    // A block in the world: what retail's CLandBlock holds of it (static_objects, buildings).
-    private sealed class LoadedBlock(PendingBlock pending)
-    {
-        public PendingBlock Pending { get; } = pending;
-
-        public List<WorldObject> Objects { get; } = new();
-
-        public List<Objects.PhysicsObj> StaticObjects { get; } = new();
-
-        public List<BuildingObj> Buildings { get; } = new();
-
-        public List<uint> Missing { get; } = new();
     }
 }
