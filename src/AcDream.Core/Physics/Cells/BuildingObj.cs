@@ -110,4 +110,17 @@ public sealed class BuildingObj
             }
         }
     }
+
+    /// <summary>Adds the indoor cells behind the doors that the parts' bounding boxes reach.</summary>
+    // retail: CBuildingObj::find_building_transit_cells(parts) (acclient.c:719091)
+    internal void FindBuildingTransitCellsForParts(ICellSource cells, ReadOnlySpan<PlacedPartBox> parts, CellArray cellArray)
+    {
+        for (int i = 0; i < _portals.Length; i++)
+        {
+            if (cells.GetVisible(_portals[i].OtherCellId) is EnvCell other)
+            {
+                other.CheckBuildingTransitForParts(cells, _portals[i].OtherPortalId, parts, cellArray);
+            }
+        }
+    }
 }

@@ -58,4 +58,8 @@ public sealed class CellStruct
     /// <summary>How the cell-local sphere lies against the cell's region.</summary>
     // retail: CCellStruct::sphere_intersects_cell (acclient.c:355501)
     public CellBspSphere SphereIntersectsCell(in Sphere sphere) => CellBsp.SphereIntersectsCellBsp(sphere);
+
+    /// <summary>False when the cell-local axis-aligned box lies wholly outside the cell's region.</summary>
+    // retail: CCellStruct::box_intersects_cell (acclient.c:355507)
+    internal bool BoxIntersectsCell(System.Numerics.Vector3 min, System.Numerics.Vector3 max) => CellBsp.BoxIntersectsCellBsp(min, max);
 }

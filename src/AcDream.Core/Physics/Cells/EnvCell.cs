@@ -10,7 +10,8 @@ namespace AcDream.Core.Physics.Cells;
 /// the collision half of it.
 /// </summary>
 /// <remarks>Split by concern: this file (data, point test), <c>EnvCell.Collision.cs</c> (the sweep's collision calls),
-/// <c>EnvCell.Transit.cs</c> (which cells a sphere reaches through the portals).</remarks>
+/// <c>EnvCell.Transit.cs</c> (which cells a sphere reaches through the portals), <c>EnvCell.PartTransit.cs</c> (which cells a
+/// static object's parts reach through them, and through a building's door).</remarks>
 public sealed partial class EnvCell : ObjCell
 {
     private readonly CellPortal[] _portals;

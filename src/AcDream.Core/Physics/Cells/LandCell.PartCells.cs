@@ -1,7 +1,6 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Collision;
-using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Spatial;
 
@@ -11,15 +10,13 @@ namespace AcDream.Core.Physics.Cells;
 public sealed partial class LandCell
 {
     /// <summary>The cells the parts reach from this cell: the outdoor cells their boxes cover, then the indoor cells behind
-    /// this cell's building's doors.</summary>
-    /// <remarks>The building's doors are tested with <paramref name="standIn"/> (the object's sorting sphere) in place of
-    /// <c>CBuildingObj::find_building_transit_cells(parts)</c> (docs/divergences.md).</remarks>
+    /// this cell's building's doors that their boxes reach.</summary>
     // retail: CLandCell::find_transit_cells(parts) (acclient.c:355432)
-    internal void FindTransitCellsForParts(ICellSource cells, ReadOnlySpan<PlacedPartBox> parts, ReadOnlySpan<Sphere> standIn, CellArray cellArray)
+    internal void FindTransitCellsForParts(ICellSource cells, ReadOnlySpan<PlacedPartBox> parts, CellArray cellArray)
     {
         AddAllOutsideCellsForParts(cells, parts, cellArray);
         // retail: CSortCell::find_transit_cells(parts) (acclient.c:356096)
-        Building?.FindBuildingTransitCells(cells, standIn, cellArray, null);
+        Building?.FindBuildingTransitCellsForParts(cells, parts, cellArray);
     }
 
     /// <summary>

@@ -71,9 +71,6 @@ public sealed partial class PhysicsObj
     /// for the parts: an outdoor cell adds the block of outdoor cells the parts' bounding boxes cover and the indoor cells
     /// behind its building's doors; an indoor cell, its neighbours through its portals.
     /// </summary>
-    /// <remarks>The indoor steps (<c>CEnvCell::find_transit_cells(parts)</c>, <c>check_building_transit(parts)</c>) are
-    /// stood in for by the sphere queries with the object's sorting sphere (docs/divergences.md, "Static objects' indoor
-    /// cell lists").</remarks>
     // retail: CPhysicsObj::find_bbox_cell_list (acclient.c:318275)
     internal void FindBboxCellList(RetailSweep sweep, CellArray ca)
     {
@@ -98,24 +95,21 @@ public sealed partial class PhysicsObj
         for (int i = 0; i < numParts; i++)
         {
             PartBox b = boxes[i];
-            placed[i] = new PlacedPartBox(new Position(p.ObjCellId, ScaledPartFrame(b.LocalFrame)), b.Min, b.Max, b.Always2D, b.Radius);
+            placed[i] = new PlacedPartBox(new Position(p.ObjCellId, ScaledPartFrame(b.LocalFrame)), b.Min, b.Max, b.Always2D, b.PartSphere);
         }
 
-        Sphere sorting = PartArray is IPartCollision pc ? pc.SortingSphere : Sphere.Dummy;
-        Span<Sphere> standIn = stackalloc Sphere[1];
-        standIn[0] = new Sphere(p.LocalToGlobal(p, sorting.Center), sorting.Radius * Scale);
+        ReadOnlySpan<PlacedPartBox> parts = placed.AsSpan(0, numParts);
         for (int i = 0; i < ca.NumCells; i++)
         {
             // retail: CPartArray::calc_cross_cells_static (acclient.c:325457) -> the cell's find_transit_cells(parts)
             ObjCell? cell = ca.CellAt(i);
             if (cell is LandCell land)
             {
-                land.FindTransitCellsForParts(sweep.Cells, placed, standIn, ca);
+                land.FindTransitCellsForParts(sweep.Cells, parts, ca);
             }
             else if (cell is EnvCell env)
             {
-                // non-retail: the sorting sphere stands in for the parts in an indoor cell
-                env.FindTransitCells(sweep.Cells, p, standIn, ca, null);
+                env.FindTransitCellsForParts(sweep.Cells, parts, ca);
             }
         }
     }

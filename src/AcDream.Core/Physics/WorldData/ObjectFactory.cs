@@ -303,8 +303,9 @@ public sealed class ObjectFactory
                 throw new RetailDataFormatException("CSetup", 0, $"0x{dataId:X8}: part {i}'s default scale is outside [0.01, 100]");
             }
             (Vector3 min, Vector3 max) = BoundingBox(gfx.Vertices);
-            float radius = gfx.PhysicsSphere?.Radius ?? 0f;
-            boxes[i] = new PartBox(frames[i], min, max, always2D, radius);
+            // retail: gfxobj[0]->physics_sphere, else drawing_sphere (CEnvCell::find_transit_cells(parts), acclient.c:348406)
+            Sphere? partSphere = gfx.PhysicsSphere ?? gfx.DrawingSphere;
+            boxes[i] = new PartBox(frames[i], min, max, always2D, partSphere);
         }
 
         return new ObjectModel(dataId, shape, sorting, physics, frames, scales, boxes, anim, script, mtable);

@@ -97,4 +97,42 @@ public sealed partial class BspTree
             }
         }
     }
+
+    /// <summary>
+    /// False when the axis-aligned box (cell-local) lies wholly behind some plane of the cell region's chain: its low corner
+    /// below -EPSILON and every other corner on the negative side (<see cref="CollisionPlane.WhichSide"/> with EPSILON);
+    /// true otherwise.
+    /// </summary>
+    // retail: BSPTREE::box_intersects_cell_bsp (acclient.c:360724) -> BSPNODE::box_intersects_cell_bsp (acclient.c:363424)
+    internal bool BoxIntersectsCellBsp(Vector3 min, Vector3 max)
+    {
+        const float eps = PhysicsGlobals.Epsilon;
+        int i = Root;
+        while (true)
+        {
+            ref readonly BspNode n = ref _nodes[i];
+            CollisionPlane p = n.SplittingPlane;
+            double d = p.DotProduct(min);
+            if (d <= eps && d < -eps
+                && p.WhichSide(max, eps) == Sidedness.Negative
+                && p.WhichSide(new Vector3(min.X, min.Y, max.Z), eps) == Sidedness.Negative
+                && p.WhichSide(new Vector3(min.X, max.Y, min.Z), eps) == Sidedness.Negative
+                && p.WhichSide(new Vector3(max.X, min.Y, min.Z), eps) == Sidedness.Negative
+                && p.WhichSide(new Vector3(max.X, min.Y, max.Z), eps) == Sidedness.Negative
+                && p.WhichSide(new Vector3(min.X, max.Y, max.Z), eps) == Sidedness.Negative
+                && p.WhichSide(new Vector3(max.X, max.Y, min.Z), eps) == Sidedness.Negative)
+            {
+                return false;
+            }
+
+            if (n.PosNode < 0)
+            {
+                // The decompilation's loop ends in a bare break (the trailing return is lost); the only explicit return
+                // is the outside 0, so the end of the chain answers 1 (the box meets the region).
+                return true;
+            }
+
+            i = n.PosNode;
+        }
+    }
 }

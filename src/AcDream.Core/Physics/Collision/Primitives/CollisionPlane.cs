@@ -56,6 +56,45 @@ public struct CollisionPlane : IEquatable<CollisionPlane>
     }
 
     /// <summary>
+    /// The side of the plane the axis-aligned box <paramref name="min"/>–<paramref name="max"/> lies on: the low corner
+    /// decides (<see cref="Sidedness.Positive"/> beyond EPSILON, <see cref="Sidedness.Negative"/> below -EPSILON), and
+    /// <see cref="Sidedness.Crossing"/> when that corner is within EPSILON of the plane or any other corner's
+    /// <see cref="WhichSide"/> differs.
+    /// </summary>
+    // retail: Plane::intersect_box (acclient.c:467717)
+    internal readonly Sidedness IntersectBox(Vector3 min, Vector3 max)
+    {
+        double d = DotProduct(min);
+        Sidedness side;
+        if (d <= PhysicsGlobals.Epsilon)
+        {
+            if (d >= -PhysicsGlobals.Epsilon)
+            {
+                return Sidedness.Crossing;
+            }
+
+            side = Sidedness.Negative;
+        }
+        else
+        {
+            side = Sidedness.Positive;
+        }
+
+        if (side != WhichSide(max, PhysicsGlobals.Epsilon)
+            || side != WhichSide(new Vector3(max.X, min.Y, min.Z), PhysicsGlobals.Epsilon)
+            || side != WhichSide(new Vector3(min.X, max.Y, min.Z), PhysicsGlobals.Epsilon)
+            || side != WhichSide(new Vector3(min.X, min.Y, max.Z), PhysicsGlobals.Epsilon)
+            || side != WhichSide(new Vector3(max.X, max.Y, min.Z), PhysicsGlobals.Epsilon)
+            || side != WhichSide(new Vector3(max.X, min.Y, max.Z), PhysicsGlobals.Epsilon)
+            || side != WhichSide(new Vector3(min.X, max.Y, max.Z), PhysicsGlobals.Epsilon))
+        {
+            return Sidedness.Crossing;
+        }
+
+        return side;
+    }
+
+    /// <summary>
     /// The parameter <paramref name="time"/> at which the ray <c>pt + t·dir</c> meets the plane. Returns false when the ray
     /// is parallel within EPSILON (<c>|dir·N| &lt; 0.0002</c>) or the hit lies behind the start (<c>t &lt; 0</c>);
     /// <paramref name="time"/> is still written in the second case, as retail does.
