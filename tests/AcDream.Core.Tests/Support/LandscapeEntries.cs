@@ -55,7 +55,7 @@ internal static class LandscapeEntries
 
     /// <summary>A world sweeping over world cells, its loader on <paramref name="s"/>, and a landscape of radius
     /// <paramref name="radius"/> over it.</summary>
-    public static Landscape Landscape(DictionarySource s, out PhysicsWorld world, out WorldCells cells, int radius = 3)
+    public static Landscape Landscape(AcDream.Core.Physics.Data.IRetailDataSource s, out PhysicsWorld world, out WorldCells cells, int radius = 3)
     {
         world = WorldSceneEntries.World(out cells);
         var landscape = new Landscape(new WorldLoader(world, s));

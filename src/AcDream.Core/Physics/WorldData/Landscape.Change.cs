@@ -106,7 +106,7 @@ public sealed partial class Landscape
 
         // 2. The cell's own block must be in the world afterwards: outdoors, at full detail; indoors, at full detail or as a
         // dungeon's interior.
-        bool cellBlockFull = loadPoint != 0 && WillBeFull(plan, grid, blockId);
+        bool cellBlockFull = WillBeFull(plan, grid, blockId);
         if (outdoors && !cellBlockFull)
         {
             return LandscapeChange.NoCell;
@@ -131,7 +131,7 @@ public sealed partial class Landscape
             ReleaseInterior(released);
         }
 
-        if (releaseGrid || (loadPoint == 0 && _landBlocks is not null && !KeepLandscapeLoaded))
+        if (releaseGrid)
         {
             ReleaseGrid(released);
         }
