@@ -14,8 +14,8 @@ namespace AcDream.Core.Tests.Api;
 /// The layers table of docs/architecture.md is the library's: each layer imports only what its "may import" column lists,
 /// read from the compiled code and from the using directives (<see cref="LayerImports"/>), as <see cref="PublicSurfaceTests"/>
 /// checks the surface table. The bottom stays at the bottom: <c>Spatial</c> imports nothing of the library, the byte reader
-/// (<c>Format</c>) only <c>Spatial</c>, only the world door (<c>WorldData</c>) and the scenery above the loaders (<c>Scenery</c>) import the loaders (<c>Data</c>), and nothing imports the door or the input
-/// (<c>Input</c>).
+/// (<c>Format</c>) only <c>Spatial</c>, only the world door (<c>WorldData</c>) and the scenery above the loaders (<c>Scenery</c>) import the loaders (<c>Data</c>), and nothing imports the door, the input
+/// (<c>Input</c>) or the debug view (<c>Debug</c>).
 /// </summary>
 public sealed partial class LayeringTests
 {
@@ -103,6 +103,8 @@ public sealed partial class LayeringTests
 
             Assert.DoesNotContain("Input", allowed);
             Assert.DoesNotContain("WorldData", allowed);
+            // The debug view (Debug) reads the layers below it; nothing imports it.
+            Assert.DoesNotContain("Debug", allowed);
         }
 
         Assert.DoesNotContain("Scenery", table["Data"]);

@@ -90,6 +90,9 @@ public sealed class WorldCells : ICellSource
         }
     }
 
+    /// <summary>The loaded indoor cells (their enumerator allocates nothing), for the debug view.</summary>
+    internal Dictionary<uint, EnvCell>.ValueCollection EnvCells => _envCells.Values;
+
     /// <summary>The loaded indoor cell <paramref name="cellId"/>, or null.</summary>
     // retail: CEnvCell::GetVisible (acclient.c:349673)
     public EnvCell? GetEnvCell(uint cellId) => _envCells.TryGetValue(cellId, out EnvCell? c) ? c : null;

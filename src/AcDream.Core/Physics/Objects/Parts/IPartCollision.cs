@@ -34,6 +34,15 @@ public interface IPartCollision
     /// transition is engine-internal: the built-in part array answers with its BSP parts, and any other implementation
     /// answers OK (its parts carry no physics BSP).</remarks>
     internal TransitionState FindPartObjCollisions(int index, Transition transition) => TransitionState.Ok;
+
+    /// <summary>Part <paramref name="index"/> with a physics BSP and where it stands now (the object's frame combined with the
+    /// part's, as <see cref="FindPartObjCollisions"/> places it), for the debug view; null for a part without one (and for
+    /// any other implementation).</summary>
+    internal PhysicsPart? GetCollisionPart(int index, out Position pos)
+    {
+        pos = default;
+        return null;
+    }
 }
 
 /// <summary>Helpers for <see cref="IPartCollision"/> implementations.</summary>

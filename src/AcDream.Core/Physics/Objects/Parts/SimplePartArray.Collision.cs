@@ -165,6 +165,20 @@ public sealed partial class SimplePartArray : IPartCollision
         return part.FindObjCollisions(transition);
     }
 
+    /// <inheritdoc />
+    PhysicsPart? IPartCollision.GetCollisionPart(int index, out Position pos)
+    {
+        BspParts? bsp = _extras?.Bsp;
+        if (bsp is null || (uint)index >= (uint)bsp.Parts.Length)
+        {
+            pos = default;
+            return null;
+        }
+
+        pos = new Position(CellId, PartFrame(bsp.Frames[index]));
+        return bsp.Parts[index];
+    }
+
     // The object's frame combined with a part's local frame, its origin scaled by the object's scale (retail
     // CPartArray::UpdateParts scales each part's origin; at scale 1 the product is the origin itself).
     private Frame PartFrame(in Frame local)
