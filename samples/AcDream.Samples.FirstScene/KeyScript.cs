@@ -1,3 +1,4 @@
+using System;
 using AcDream.Core.Physics.Input;
 using AcDream.Core.Physics.Motion;
 
@@ -12,6 +13,25 @@ internal static class KeyScript
 {
     /// <summary>The script's last event: the player stands from 20 s; the creature's fade ends at 22 s; 2 s more to settle.</summary>
     public const double Seconds = 24.0;
+
+    /// <summary>The end of the walk out: from 24 s the player turns south and runs across the landblock's south edge
+    /// (from the hut's wall, about 64 m: 11 s at 6 m/s), and stands from the next block on.</summary>
+    public const double WalkOutSeconds = 40.0;
+
+    /// <summary>The keys of the walk out, steered by the player's heading as a client's auto-run would: turn right until it
+    /// faces south (heading 180°, within 5°), then run; stand once in the block to the south.</summary>
+    public static (MovementKeys Keys, string Label) WalkOut(AcDream.Core.Physics.Objects.PhysicsObj player)
+    {
+        if ((player.Position.ObjCellId >> 16) != ((Scene.CentreBlock >> 16) - 1))
+        {
+            double off = player.Position.Frame.Heading - 180.0;
+            return Math.Abs(off) > 5.0
+                ? (MovementKeys.TurnRight, "turn to face south")
+                : (MovementKeys.Forward | MovementKeys.Run, "run south, out of the block");
+        }
+
+        return (MovementKeys.None, "stand (in the next block)");
+    }
 
     /// <summary>The character: run skill 45 gives a run rate of (45 / 245 × 11 + 4) / 4 = 1.505 (running 6.02 m/s), jump skill
     /// 100 at extent 0.5 a jump of (100 / 1400 × 22.2 + 0.05) × 0.5 = 0.818 m (v_z = √(19.6 × 0.818) = 4.00 m/s).</summary>

@@ -31,7 +31,8 @@ public static class Program
     private const string Usage = """
         AcDream.Samples.FirstScene: a player walks, runs, jumps and walks into a hut; a remote creature follows its reports.
         Options:
-          --seconds N    simulated seconds (default 24: the scene's script; longer runs stand still)
+          --seconds N    simulated seconds (default 40: the scene's 24 s script, then the walk south out of the
+                         landblock with the world following; longer runs stand still)
           --fps N        frames per second of the render loop (default 60)
           --terrain DIR  the ac-terrain folder (default: ACDREAM_TERRAIN_DIR, else ../shared/data/ac-terrain above the
                          program or the current folder)
@@ -43,7 +44,7 @@ public static class Program
     public static int Main(string[] args)
     {
         ArgumentNullException.ThrowIfNull(args);
-        double seconds = KeyScript.Seconds;
+        double seconds = KeyScript.WalkOutSeconds;
         int fps = 60;
         string? terrainDir = null;
         bool synthetic = false;
@@ -79,21 +80,23 @@ public static class Program
         Console.WriteLine(terrainDir is not null ? $"terrain: real Holtburg 3x3 from {terrainDir}" : "terrain: synthetic 3x3 slopes (no ac-terrain folder found)");
         Scene.AddContents(data);
 
-        // 2. The world, built from the client's data through the one door (docs/world.md): the 3 x 3 landblocks' terrain, then
-        //    their buildings, static objects and scenery, in retail's order. The world sweeps with the retail collision
-        //    sweep over those cells; each WorldObject is what a renderer draws (model id, cell, frame, scale).
+        // 2. The world, built from the client's data by the landscape that follows the player (docs/world.md): retail's grid of
+        //    landblocks around the player's cell, of which the 3 x 3 around it are built into the world (terrain, then
+        //    buildings, static objects and scenery, in retail's order). The world sweeps with the retail collision sweep over
+        //    those cells; each WorldObject of a built block is what a renderer draws (model id, cell, frame, scale).
         var world = new PhysicsWorld(new WorldCells(new TerrainWorld(data.HeightTable)));
-        var loader = new WorldLoader(world, data);
-        IReadOnlyList<WorldBlock> blocks = loader.Load(data.BlockIds);
+        var landscape = new Landscape(new WorldLoader(world, data));
+        var start = new Position(Scene.CellAt(60f, 40f), Frame.FromHeading(new Vector3(60f, 40f, 0f), 0f));
+        LandscapeChange first = landscape.ChangePosition(start, blocking: true);   // a login: build around the player first
         int objects = 0, missing = 0;
-        foreach (WorldBlock b in blocks)
+        foreach (WorldBlock b in first.Built)
         {
             objects += b.Objects.Count;
             missing += b.MissingIds.Count;
         }
 
-        Console.WriteLine($"world: {blocks.Count} landblocks, {objects} objects (buildings, statics, scenery), {missing} missing ids");
-        TerrainWorld terrain = loader.Cells.Terrain;
+        Console.WriteLine($"world: {first.Built.Count} landblocks at full detail of {first.Entered.Count} in the {landscape.MidWidth}x{landscape.MidWidth} grid, {objects} objects (buildings, statics, scenery), {missing} missing ids");
+        TerrainWorld terrain = landscape.Loader.Cells.Terrain;
 
         // 3. The player: a part array from the human Setup and the character's skills (its weenie), placed on the ground,
         //    made the world's player (which gives it retail's movement manager and motion interpreter). SetupIssues names
@@ -109,7 +112,7 @@ public static class Program
         var body = new AnimatedPartArray(SetupPhysics.Human, numParts: 1, humanTable, animations: null);
         player.PartArray = body;
         player.Weenie = KeyScript.Character();
-        if (!player.EnterWorld(Scene.OnGround(terrain, 60f, 40f, heading: 0f)))
+        if (!player.EnterWorld(Scene.OnGround(terrain, 60f, 40f, heading: 0f)))   // after the landscape built its cells
         {
             Console.Error.WriteLine("the player could not enter the world");
             return 1;
@@ -130,6 +133,7 @@ public static class Program
         bool faded = false;
         Console.WriteLine("   t  drawn cell      x       y       z     contact  speed  heading  doing                           | creature  error  transl.");
         int frames = (int)Math.Round(seconds * fps);
+        int sceneResult = 0;
         string command = "";
         for (int i = 1; i <= frames; i++)
         {
@@ -139,7 +143,7 @@ public static class Program
             //    every object at its blended pose for the render time (the world moves objects at most 30 times a second, at
             //    a cadence that depends on the frame rate; the blend is evenly spaced at any).
             remote.Deliver(now);
-            (MovementKeys keys, command) = KeyScript.At(now);
+            (MovementKeys keys, command) = now < KeyScript.Seconds ? KeyScript.At(now) : KeyScript.WalkOut(player);
             input.SetHeldKeys(keys);
             chaser.Deliver(now);
             if ((keys & MovementKeys.Jump) == 0 && command == "run east (jump)" && input.LastError != MotionError.None)
@@ -152,6 +156,14 @@ public static class Program
                 remote.Obj.SetTranslucency(1f, 2.0);   // fade the creature out over 2 s
             }
 
+            // The landscape follows the player before the tick (retail: SmartBox::UseTime -> CellManager::ChangePosition):
+            // nothing happens until its cell changes; crossing into another landblock shifts the grid.
+            LandscapeChange change = landscape.ChangePosition(player.Position);
+            if (change.Built.Count + change.Released.Count != 0)
+            {
+                Console.WriteLine($"{now,6:F2}  the world follows the player into 0x{landscape.LoadedCellId:X8}: {change.Built.Count} landblocks built, {change.Released.Count} released, {change.Entered.Count} entered the grid");
+            }
+
             world.Tick(now);
             check.Observe(terrain, player, now);
             Position drawn = player.GetRenderPose(world.RenderTime);   // a renderer draws this
@@ -160,9 +172,15 @@ public static class Program
                 Print(player, drawn, remote, now, command);
                 Console.WriteLine($"      chaser: {chaser.Status}");
             }
+
+            if (i == (int)Math.Round(KeyScript.Seconds * fps))
+            {
+                sceneResult = check.Report(remote, chaser, now);   // the scene's script ends here; the walk out follows
+            }
         }
 
-        return seconds >= KeyScript.Seconds ? check.Report(remote, chaser, seconds) : 0;
+        int crossResult = seconds >= KeyScript.WalkOutSeconds ? check.ReportCrossing(player, landscape) : 0;
+        return seconds >= KeyScript.Seconds ? sceneResult | crossResult : 0;
     }
 
     private static void Print(PhysicsObj player, in Position drawn, RemoteCreature remote, double now, string command)

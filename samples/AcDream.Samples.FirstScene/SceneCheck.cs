@@ -3,6 +3,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Objects.Parts;
 using AcDream.Core.Physics.Terrain;
+using AcDream.Core.Physics.WorldData;
 
 namespace AcDream.Samples.FirstScene;
 
@@ -88,6 +89,32 @@ internal sealed class SceneCheck
         bool faced = chaser.PlayerFacingError < 5.0;
         Console.WriteLine($"player faces the chaser: {chaser.PlayerFacingError:F1} degrees off: {(faced ? "ok" : "FAIL")}");
         return walked && jumped && hut && followed && fadeDone && chased && faced ? 0 : 1;
+    }
+
+    /// <summary>Prints the walk out's summary: the player crossed into the block to the south and the landscape followed it
+    /// (its load point in the player's block, the 3 × 3 around it at full detail, as far as the data holds blocks, and in
+    /// the world); 0 when every expectation holds, else 1.</summary>
+    public int ReportCrossing(PhysicsObj player, Landscape landscape)
+    {
+        uint block = player.Position.ObjCellId >> 16;
+        uint south = (Scene.CentreBlock >> 16) - 1;
+        bool crossed = block == south && player.CellId != 0;
+        Console.WriteLine($"walked out of 0x{Scene.CentreBlock >> 16:X4} into 0x{block:X4}: {(crossed ? "ok" : "FAIL")}");
+        bool followed = landscape.LoadedCellId >> 16 == block;
+        int full = 0, expected = 0;
+        bool right = true;
+        foreach (LandscapeBlock b in landscape.Blocks)
+        {
+            int dx = (int)(b.BlockId >> 24) - (int)(block >> 8), dy = (int)((b.BlockId >> 16) & 0xFF) - (int)(block & 0xFF);
+            bool near = Math.Abs(dx) <= 1 && Math.Abs(dy) <= 1;
+            expected += near ? 1 : 0;
+            full += b.IsFullDetail ? 1 : 0;
+            right &= near == (b.World is not null);
+        }
+
+        followed &= right && full == expected && expected > 0;
+        Console.WriteLine($"the world followed: load point 0x{landscape.LoadedCellId:X8}, {full} landblocks at full detail (the 3 x 3 around the player that the data holds): {(followed ? "ok" : "FAIL")}");
+        return crossed && followed ? 0 : 1;
     }
 
     private static float SetupPhysicsRadius => SetupPhysics.Human.Spheres[0].Radius;
