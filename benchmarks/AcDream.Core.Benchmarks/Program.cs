@@ -9,6 +9,7 @@ namespace AcDream.Core.Benchmarks;
 /// artifacts/replay/ (<c>--update-docs</c>: docs/interpolation-replay.md and .svg); <c>scene-ab</c> compares a
 /// world tick with and without 100,000 resting objects in one process (see <see cref="Report.SceneAbReport"/>);
 /// <c>world-map</c> draws the top-down picture of what collides around Holtburg (see <see cref="Report.HoltburgMap"/>);
+/// <c>landscape-memory</c> prints the memory a streamed 3 × 3 holds (see <see cref="LandscapeMemory"/>);
 /// <c>count ROW N</c> runs one row N times for instruction counts (see <see cref="InstructionCounts"/>);
 /// anything else goes to BenchmarkDotNet's switcher (e.g. <c>--filter '*'</c>, <c>--job Dry</c>).
 /// </summary>
@@ -40,6 +41,11 @@ public static class Program
         if (args.Length > 0 && string.Equals(args[0], "world-map", StringComparison.OrdinalIgnoreCase))
         {
             return Report.HoltburgMap.Run(args.AsSpan(1));
+        }
+
+        if (args.Length > 0 && string.Equals(args[0], "landscape-memory", StringComparison.OrdinalIgnoreCase))
+        {
+            return LandscapeMemory.Run();
         }
 
         if (args.Length > 0 && string.Equals(args[0], "count", StringComparison.OrdinalIgnoreCase))

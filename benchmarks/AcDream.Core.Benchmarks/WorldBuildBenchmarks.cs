@@ -42,13 +42,16 @@ internal static class WorldBench
     }
 
     /// <summary>The entries: every block (with or without its info and objects) and the three models.</summary>
-    public static Dictionary<uint, byte[]> Entries(bool populated)
+    public static Dictionary<uint, byte[]> Entries(bool populated) => Entries(populated, Blocks);
+
+    /// <summary>The entries of <paramref name="blocks"/> and the three models.</summary>
+    public static Dictionary<uint, byte[]> Entries(bool populated, uint[] blocks)
     {
         var e = new Dictionary<uint, byte[]>();
         var height = new byte[81];
         Array.Fill(height, (byte)20);
         var rnd = new Random(35);
-        foreach (uint block in Blocks)
+        foreach (uint block in blocks)
         {
             e[block] = WorldDataBytes.LandBlock(block, populated, new ushort[81], height);
             if (populated)

@@ -19,7 +19,7 @@ namespace AcDream.Core.Benchmarks.Report;
 /// <summary>
 /// <c>world-map</c>: the Holtburg 3 × 3 (0xA8B3–0xAAB5) on the real terrain (<c>../shared/data/ac-terrain</c>) with synthetic
 /// scene tables — a region whose every terrain type grows trees, bushes, rocks and grass from the terrain words' scene
-/// slots, and landblock infos with a few houses and statics — built with <see cref="WorldLoader"/>, a walker driven north
+/// slots, and landblock infos with a few houses and statics — streamed by the <see cref="Landscape"/>, a walker driven north
 /// across the centre block's northern edge, and the top-down picture of what collides (<see cref="TopDownMap"/>, drawn
 /// through the debug view). Writes <c>artifacts/world-map/holtburg-3x3.svg</c>; <c>--update-docs</c>:
 /// <c>docs/world-holtburg.svg</c>; <c>--out DIR</c> anywhere.
@@ -71,18 +71,18 @@ internal static class HoltburgMap
     }
 
     /// <summary>
-    /// The nine blocks through the world door, in one place (the lead's streaming landscape will replace this method): a world
-    /// over the real height table, a data source with the blocks' terrain, their infos, the region, the scenes and the models.
+    /// The nine blocks as the landscape streams them around the walker's start (<see cref="Landscape"/>, radius 1): a world over
+    /// the real height table, a data source with the blocks' terrain, their infos, the region, the scenes and the models. The
+    /// walk is drawn over the 3 × 3 as it was built (the walk itself does not move the landscape, so the picture keeps the
+    /// whole 3 × 3).
     /// </summary>
     public static PhysicsWorld BuildWorld(LandHeightTable table, List<LandBlockEntry> blocks, out IReadOnlyList<WorldBlock> built)
     {
         TerrainWorld heights = Holtburg.World((table, blocks));
         var entries = new Dictionary<uint, byte[]>();
-        var ids = new uint[blocks.Count];
         for (int k = 0; k < blocks.Count; k++)
         {
             LandBlockEntry b = blocks[k];
-            ids[k] = b.Id;
             entries[b.Id] = WorldDataBytes.LandBlock(b.Id, true, WithSceneSlots(b.Id, b.Terrain), b.Height);
             entries[(b.Id & 0xFFFF0000u) | 0xFFFEu] = Info(b.Id, heights);
         }
@@ -91,8 +91,11 @@ internal static class HoltburgMap
         AddScenesAndModels(entries);
         var world = new PhysicsWorld(0.0);
         world.Sweep = new RetailSweep(new WorldCells(new TerrainWorld(table)));
-        var loader = new WorldLoader(world, new WorldBench.Source(entries));
-        built = loader.Load(ids);
+        // The landscape (retail's LScape) streams the 3 x 3 around the walker's start; a grid of radius 1 holds just those.
+        var landscape = new Landscape(new WorldLoader(world, new WorldBench.Source(entries)));
+        landscape.SetMidRadius(1);
+        uint startCell = LandDefs.LCoordToGid(0xA9 * 8 + 1, 0xB4 * 8 + 6);
+        built = landscape.ChangePosition(new Position(startCell, new Frame(new Vector3(40f, 150f, 0f), Quaternion.Identity)), blocking: true).Built;
         return world;
     }
 
