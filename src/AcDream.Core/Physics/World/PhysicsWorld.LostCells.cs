@@ -1,4 +1,7 @@
+using System;
 using System.Collections.Generic;
+using AcDream.Core.Physics.Cells;
+using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
 
@@ -135,6 +138,55 @@ public sealed partial class PhysicsWorld
             o = next;
         }
     }
+
+    /// <summary>Cell <paramref name="cell"/> is released: its moving objects (not static, no parent), gathered first in the
+    /// cell's list order, each leave visibility for the lost cell of their position's cell.</summary>
+    // retail: CObjectMaint::ReleaseObjCell (acclient.c:309288)
+    internal void ReleaseObjCell(ObjCell cell)
+    {
+        ReadOnlySpan<PhysicsObj> list = cell.ObjectList;
+        List<PhysicsObj> gathered = _releaseScratch;
+        gathered.Clear();
+        for (int i = 0; i < list.Length; i++)
+        {
+            PhysicsObj o = list[i];
+            if ((o.State & PhysicsState.Static) == 0 && o.Parent is null)
+            {
+                gathered.Add(o);
+            }
+        }
+
+        foreach (PhysicsObj o in gathered)
+        {
+            o.LeaveVisibility();
+        }
+
+        gathered.Clear();
+    }
+
+    /// <summary>Each moving object of <paramref name="cell"/> not shadowed in every cell it reaches is shadowed again (the
+    /// second half of <c>CObjCell::init_objects</c>).</summary>
+    // retail: CObjCell::init_objects (acclient.c:346914) -> CPhysicsObj::recalc_cross_cells (acclient.c:322917)
+    internal void RecalcCrossCellsOfIncomplete(ObjCell cell)
+    {
+        if (_sweep is not RetailSweep sweep)
+        {
+            return;
+        }
+
+        ReadOnlySpan<PhysicsObj> list = cell.ObjectList;
+        for (int i = 0; i < list.Length; i++)
+        {
+            PhysicsObj o = list[i];
+            if ((o.State & PhysicsState.Static) == 0 && !o.IsCompletelyVisible)
+            {
+                o.RehomeShadows(sweep);
+            }
+        }
+    }
+
+    // Retail's static DArray of ReleaseObjCell, kept by the world.
+    private readonly List<PhysicsObj> _releaseScratch = new();
 
     /// <summary>Every outdoor cell of landblock <paramref name="blockPrefix"/> (<c>0xXXYY0000</c>) was loaded: the lost cells
     /// of its 64 land cells, in retail's order (<c>CLandBlock::init_dyn_objs</c>: x, then y).</summary>

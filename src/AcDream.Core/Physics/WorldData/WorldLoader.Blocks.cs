@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Primitives;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Terrain;
 
 namespace AcDream.Core.Physics.WorldData;
 
@@ -91,13 +92,45 @@ public sealed partial class WorldLoader
         b.DynObjsInitDone = true;
         if (!b.Interior)
         {
-            _world.InitLandBlockObjCells(b.Pending.BlockId & 0xFFFF0000u);
+            LandBlock land = b.Pending.LandBlock;
+            for (int x = 0; x < LandDefs.BlockSide; x++)
+            {
+                for (int y = 0; y < LandDefs.BlockSide; y++)
+                {
+                    land.GetCell(x, y).InitObjects(_world);
+                }
+            }
         }
 
         foreach (EnvCell c in b.Pending.EnvCells)
         {
-            _world.InitObjCell(c.CellId);
+            c.InitObjects(_world);
         }
+    }
+
+    /// <summary>The block's cells are released: their shadows dropped and their moving objects sent to their lost cells
+    /// (land cells x, then y; then the indoor cells).</summary>
+    // retail: CLandBlock::release_objs (acclient.c:351533); the indoor cells' as CEnvCell::release_visible releases them
+    private void ReleaseObjs(LoadedBlock b)
+    {
+        if (!b.Interior)
+        {
+            LandBlock land = b.Pending.LandBlock;
+            for (int x = 0; x < LandDefs.BlockSide; x++)
+            {
+                for (int y = 0; y < LandDefs.BlockSide; y++)
+                {
+                    land.GetCell(x, y).ReleaseObjects(_world);
+                }
+            }
+        }
+
+        foreach (EnvCell c in b.Pending.EnvCells)
+        {
+            c.ReleaseObjects(_world);
+        }
+
+        b.DynObjsInitDone = false;
     }
 
     /// <summary>The block leaves the world: its static objects and buildings are destroyed, then its indoor cells and
@@ -107,6 +140,7 @@ public sealed partial class WorldLoader
     internal void Release(LoadedBlock b)
     {
         _blocks.Remove(b.Pending.BlockId);
+        ReleaseObjs(b);
         DestroyStaticObjects(b);
         DestroyBuildings(b);
         foreach (EnvCell c in b.Pending.EnvCells)
