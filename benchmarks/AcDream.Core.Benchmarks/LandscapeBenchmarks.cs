@@ -71,9 +71,10 @@ public class LandscapeCrossingBenchmarks
 }
 
 /// <summary>
-/// The per-tick cost between crossings: <see cref="StaticWorldTickBenchmarks"/>'s walker in the same populated 3 × 3, built by
-/// the landscape, which is asked every tick (the cell does not change: nothing to do). Against
-/// <see cref="StaticWorldTickBenchmarks"/> with <c>Populated = true</c> the two rows should agree within noise, at 0 B.
+/// The per-tick cost between crossings: a walker circling (1 m/s, 0.2 rad/s: radius 5 m) inside one cell of the populated
+/// 3 × 3 (<see cref="WorldBench"/>: 3,590 statics and scenery objects), with the world built by the loader alone
+/// (<c>Landscape = false</c>) or by the landscape, asked every tick with the player's position (<c>true</c>: the cell does
+/// not change, so it has nothing to do). The two rows should agree within noise, at 0 B.
 /// </summary>
 [MemoryDiagnoser]
 public class LandscapeTickBenchmarks
@@ -81,44 +82,103 @@ public class LandscapeTickBenchmarks
     private const int Ticks = 10;
     private const double Dt = 0.034;
     private PhysicsWorld _world = null!;
-    private Landscape _landscape = null!;
+    private Landscape? _landscape;
     private PhysicsObj _player = null!;
     private double _now;
+
+    /// <summary>True: the landscape built the world and is asked every tick; false: the loader built it.</summary>
+    [Params(false, true)]
+    public bool Landscape { get; set; }
 
     [GlobalSetup]
     public void Setup()
     {
         _world = WorldBench.World();
-        _landscape = new Landscape(WorldBench.Loader(_world, WorldBench.Entries(true), scenery: true));
-        var start = new Position(LandDefs.LCoordToGid(0x80 * 8 + 4, 0x80 * 8 + 4), new Frame(new Vector3(96f, 86f, 20f), Quaternion.Identity));
-        _landscape.ChangePosition(start, blocking: true);
+        WorldLoader loader = WorldBench.Loader(_world, WorldBench.Entries(true), scenery: true);
+        // Cell (4, 3) of the centre block, x 96..120, y 72..96: the circle's centre (108, 84), radius 5 m.
+        var start = new Position(LandDefs.LCoordToGid(0x80 * 8 + 4, 0x80 * 8 + 3), new Frame(new Vector3(113f, 84f, 20f), Quaternion.Identity));
+        if (Landscape)
+        {
+            _landscape = new Landscape(loader);
+            _landscape.ChangePosition(start, blocking: true);
+        }
+        else
+        {
+            loader.Load(WorldBench.Blocks);
+        }
+
         var parts = Walkers.OneSphere(0.48f, 0.6f, 1.5f);
         _player = Walkers.Create(_world, 0x50000001, start, parts);
-        parts.SequenceVelocity = new Vector3(0f, 2f, 0f);
+        parts.SequenceVelocity = new Vector3(0f, 1f, 0f);
         parts.SequenceOmega = new Vector3(0f, 0f, 0.2f);
         _world.Player = _player;
         _now = 0.0;
         for (int i = 0; i < 100; i++)
         {
-            _now += Dt;
-            _landscape.ChangePosition(_player.Position);
-            _world.Tick(_now);
+            Step();
+        }
+
+        if (_player.CellId != start.ObjCellId)
+        {
+            throw new InvalidOperationException($"the walker left its cell: 0x{_player.CellId:X8}");
         }
     }
 
-    /// <summary>The landscape asked with the player's position, then one world tick.</summary>
+    /// <summary>The landscape asked with the player's position (when it built the world), then one world tick.</summary>
     [Benchmark(OperationsPerInvoke = Ticks)]
     public bool Tick()
     {
         bool ticked = false;
         for (int i = 0; i < Ticks; i++)
         {
-            _now += Dt;
-            _landscape.ChangePosition(_player.Position);
-            ticked = _world.Tick(_now);
+            ticked = Step();
         }
 
         return ticked;
+    }
+
+    private bool Step()
+    {
+        _now += Dt;
+        _landscape?.ChangePosition(_player.Position);
+        return _world.Tick(_now);
+    }
+}
+
+/// <summary>
+/// A cell change inside the centre block of the populated 3 × 3 (no shift of the grid): retail's second pass runs again over
+/// the nine blocks (<c>init_static_objs</c>' later call: <c>adjust_scene_obj_height</c> over the scenery, and the statics
+/// not shadowed everywhere re-listed), as each ChangePosition to a new cell does. One change per operation, back and forth
+/// between two neighbouring cells.
+/// </summary>
+[MemoryDiagnoser]
+public class LandscapeCellChangeBenchmarks
+{
+    private Landscape _landscape = null!;
+    private Position _a, _b;
+
+    /// <summary>The grid's radius: 1 (the 3 × 3, all held) or 5 (11 × 11: the empty slots past the data are tried again at
+    /// each change, as retail's <c>update_loadpoint</c> does at the world's edge).</summary>
+    [Params(1, 5)]
+    public int Radius { get; set; }
+
+    [GlobalSetup]
+    public void Setup()
+    {
+        _landscape = new Landscape(WorldBench.Loader(WorldBench.World(), WorldBench.Entries(true), scenery: true));
+        _landscape.SetMidRadius(Radius);
+        _a = new Position(LandDefs.LCoordToGid(0x80 * 8 + 4, 0x80 * 8 + 3), new Frame(new Vector3(110f, 84f, 20f), Quaternion.Identity));
+        _b = new Position(LandDefs.LCoordToGid(0x80 * 8 + 4, 0x80 * 8 + 4), new Frame(new Vector3(110f, 100f, 20f), Quaternion.Identity));
+        _landscape.ChangePosition(_a, blocking: true);
+        _landscape.ChangePosition(_b);
+    }
+
+    /// <summary>One cell change (two per invocation).</summary>
+    [Benchmark(OperationsPerInvoke = 2)]
+    public LandscapeStatus CellChange()
+    {
+        _landscape.ChangePosition(_a);
+        return _landscape.ChangePosition(_b).Status;
     }
 }
 

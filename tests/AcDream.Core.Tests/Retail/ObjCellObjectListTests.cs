@@ -154,11 +154,14 @@ public class ObjCellObjectListTests
         cell.AddVoyeur(d);
         cell.HideObject(a);                             // entered then left: dropped
         Assert.Null(dm.GlobalDetectionStatus(10));
-        a.SetState(a.State | PhysicsState.Hidden);
+        cell.UnhideObject(a);                           // shown: entered again
+        Assert.Equal(DetectionStatus.Entered, dm.GlobalDetectionStatus(10));
+        // set_state (322171) -> set_hidden (322077) calls them itself when HIDDEN changes.
+        a.SetState(a.State | PhysicsState.Hidden);      // hide_object: entered then left, dropped
+        Assert.Null(dm.GlobalDetectionStatus(10));
         cell.UnhideObject(a);                           // still hidden: nothing
         Assert.Null(dm.GlobalDetectionStatus(10));
-        a.SetState(a.State & ~PhysicsState.Hidden);
-        cell.UnhideObject(a);
+        a.SetState(a.State & ~PhysicsState.Hidden);     // unhide_object
         Assert.Equal(DetectionStatus.Entered, dm.GlobalDetectionStatus(10));
     }
 }

@@ -310,6 +310,22 @@ public sealed partial class PhysicsObj
         return result;
     }
 
+    /// <summary>Every object the collision table still holds is reported as a new touch (the object reports collisions
+    /// again).</summary>
+    // retail: CPhysicsObj::report_collision_start (acclient.c:321262)
+    internal void ReportCollisionStart(RetailSweep sweep)
+    {
+        bool contact = (_transientState & TransientState.Contact) != 0;
+        for (int i = 0; i < NumCollisionRecords; i++)
+        {
+            PhysicsObj? other = World.GetObjectById(CollisionRecords[i].ObjectId);
+            if (other is not null)
+            {
+                ReportObjectCollision(sweep, other, contact);
+            }
+        }
+    }
+
     // retail: CPhysicsObj::report_object_collision_end (acclient.c:317868)
     private bool ReportObjectCollisionEnd(RetailSweep sweep, uint otherId)
     {

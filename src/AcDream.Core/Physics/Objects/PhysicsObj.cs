@@ -354,14 +354,22 @@ public sealed partial class PhysicsObj
         }
     }
 
-    /// <summary>Sets the persistent state bits (retail <c>set_state</c>, acclient.c:322171, without the lighting and
-    /// no-draw side effects, which belong to the renderer).</summary>
+    /// <summary>Sets the persistent state bits (retail <c>set_state</c>). A change of <see cref="PhysicsState.Hidden"/> hides or
+    /// shows the object as retail's <c>set_hidden</c> does: hidden, it ignores collisions and stops reporting them (those in
+    /// progress end), its children get <see cref="PhysicsState.NoDraw"/> and its cell's voyeurs are told it left; shown, the
+    /// reverse. The lighting and no-draw side effects belong to the renderer.</summary>
     /// <exception cref="InvalidOperationException">The object was removed from its world.</exception>
+    // retail: CPhysicsObj::set_state (acclient.c:322171)
     public void SetState(PhysicsState newState)
     {
         ThrowIfRemoved();
         Touch();
+        PhysicsState changed = newState ^ _state;
         _state = newState;
+        if ((changed & PhysicsState.Hidden) != 0)
+        {
+            SetHidden((newState & PhysicsState.Hidden) != 0);
+        }
     }
 
     /// <summary>Sets the acceleration directly (retail <c>set_description</c> writes it); normally <see cref="CalcAcceleration"/> does.</summary>

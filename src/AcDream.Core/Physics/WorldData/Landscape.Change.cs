@@ -124,8 +124,11 @@ public sealed partial class Landscape
         }
 
         // 3. Change the world: the old cell's interior, the grid (releases, shift, levels of detail), the new interior.
-        var released = new List<uint>();
-        var built = new List<WorldLoader.LoadedBlock>();
+        // Scratch lists kept by the landscape: a cell change without a shift allocates nothing.
+        List<uint> released = _releasedScratch;
+        List<WorldLoader.LoadedBlock> built = _builtScratch;
+        released.Clear();
+        built.Clear();
         if (!keepInterior)
         {
             ReleaseInterior(released);
@@ -154,7 +157,8 @@ public sealed partial class Landscape
         }
 
         // 4. The cell's visible cells: the landscape's two passes (outdoors, or a cell seeing outside), or the interior's.
-        var grab = new List<WorldLoader.LoadedBlock>();
+        List<WorldLoader.LoadedBlock> grab = _grabScratch;
+        grab.Clear();
         if (loadPoint != 0 && _landBlocks is not null)
         {
             foreach (LandscapeBlock? b in _landBlocks)
@@ -172,6 +176,7 @@ public sealed partial class Landscape
         }
 
         _loader.GrabVisibleCells(grab);
+        grab.Clear();
         _currCell = _loader.Cells.GetVisible(cellId);
         _loadPosCellId = cellId;
         if (!gridMoves && built.Count == 0 && released.Count == 0)
@@ -187,6 +192,10 @@ public sealed partial class Landscape
 
         return new LandscapeChange(LandscapeStatus.Updated, entered, left, builtBlocks, released.ToArray());
     }
+
+    private readonly List<uint> _releasedScratch = new();
+    private readonly List<WorldLoader.LoadedBlock> _builtScratch = new();
+    private readonly List<WorldLoader.LoadedBlock> _grabScratch = new();
 
     // retail: the generate / notify_change_size pass of LScape::update_block (acclient.c:307785, lines 308169–308205), after
     // its shift: leaving blocks released, the new grid in place, then each slot's level of detail, demoting or building.

@@ -39,8 +39,9 @@ public sealed partial class WorldLoader
     // retail: LScape::grab_visible_cells (acclient.c:306570)
     internal void GrabVisibleCells(IReadOnlyList<LoadedBlock> blocks)
     {
-        foreach (LoadedBlock b in blocks)
+        for (int i = 0; i < blocks.Count; i++)
         {
+            LoadedBlock b = blocks[i];
             if (!b.Interior && !b.BuildingsDone)
             {
                 b.BuildingsDone = true;
@@ -48,8 +49,9 @@ public sealed partial class WorldLoader
             }
         }
 
-        foreach (LoadedBlock b in blocks)
+        for (int i = 0; i < blocks.Count; i++)
         {
+            LoadedBlock b = blocks[i];
             if (b.Interior)
             {
                 InitEnvCellStaticsOnce(b);
