@@ -6,7 +6,7 @@ namespace AcDream.Core.Tests.Support;
 
 /// <summary>
 /// The Frame arithmetic as it stood before the performance restructuring (combine, set_rotate, cache, IsValid, grotate, rotate,
-/// set_heading, set_vector_heading, euler_set_rotate), kept verbatim as a test-only reference: the randomised comparisons
+/// set_heading, set_vector_heading, euler_set_rotate, localtoglobal, globaltolocal), kept verbatim as a test-only reference: the randomised comparisons
 /// check that the restructured <see cref="Frame"/> gives the same bits.
 /// </summary>
 internal struct ReferenceFrame
@@ -271,5 +271,27 @@ internal struct ReferenceFrame
         Origin = new Vector3((float)(s * v.X + o.X), (float)(s * v.Y + o.Y), (float)(s * v.Z + o.Z));
         Vector3 w = sequenceOmega;
         Rotate(new Vector3((float)(s * w.X), (float)(s * w.Y), (float)(s * w.Z)));
+    }
+
+    /// <summary><c>Frame::localtoglobal</c> as it stood before it was marked for inlining (#38).</summary>
+    public readonly Vector3 LocalToGlobal(Vector3 p)
+    {
+        double z = (double)M33 * p.Z + (double)M13 * p.X + (double)M23 * p.Y + Origin.Z;
+        double y = (double)M32 * p.Z + (double)M12 * p.X + (double)M22 * p.Y + Origin.Y;
+        double x = (double)M31 * p.Z + (double)M11 * p.X + (double)M21 * p.Y + Origin.X;
+        return new Vector3((float)x, (float)y, (float)z);
+    }
+
+    /// <summary><c>Frame::globaltolocal</c> as it stood before it was marked for inlining (#38).</summary>
+    public readonly Vector3 GlobalToLocal(Vector3 p)
+    {
+        float dx = p.X - Origin.X;
+        float dy = p.Y - Origin.Y;
+        double dzWide = (double)p.Z - Origin.Z;
+        float dz = (float)dzWide;
+        double z = dzWide * M33 + (double)dx * M31 + (double)dy * M32;
+        double y = (double)dz * M23 + (double)dx * M21 + (double)dy * M22;
+        double x = (double)dz * M13 + (double)dx * M11 + (double)dy * M12;
+        return new Vector3((float)x, (float)y, (float)z);
     }
 }

@@ -35,9 +35,14 @@ internal readonly struct AxisAngle
     /// <summary>Works out the rotation of <paramref name="w"/>; false (nothing to do) when |w|² is below EPSILON².</summary>
     // retail: Frame::grotate (acclient.c:357421), up to the quaternion product
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static bool TryCreate(Vector3 w, out AxisAngle r)
+    public static bool TryCreate(Vector3 w, out AxisAngle r) => TryCreate(w.X, w.Y, w.Z, out r);
+
+    /// <summary><see cref="TryCreate(Vector3, out AxisAngle)"/> on the displacement's components (wx, wy, wz).</summary>
+    // retail: Frame::grotate (acclient.c:357421), up to the quaternion product
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool TryCreate(float wx, float wy, float wz, out AxisAngle r)
     {
-        double mag2 = (double)w.X * w.X + (double)w.Y * w.Y + (double)w.Z * w.Z;
+        double mag2 = (double)wx * wx + (double)wy * wy + (double)wz * wz;
         if (mag2 < (double)PhysicsGlobals.Epsilon * PhysicsGlobals.Epsilon)
         {
             r = default;
@@ -49,9 +54,9 @@ internal readonly struct AxisAngle
         double half = theta * 0.5;
         (double s, double cosHalf) = Math.SinCos(half); // the same bits as Sin and Cos (SinCosEquivalenceTests)
         float c = (float)cosHalf;
-        float f = (float)(s * w.X * thetaInv);
-        float g = (float)(thetaInv * s * w.Y);
-        double h = s * thetaInv * w.Z;
+        float f = (float)(s * wx * thetaInv);
+        float g = (float)(thetaInv * s * wy);
+        double h = s * thetaInv * wz;
         r = new AxisAngle(c, f, g, h);
         return true;
     }
@@ -59,7 +64,7 @@ internal readonly struct AxisAngle
 
 /// <summary>
 /// A one-entry cache of <see cref="AxisAngle"/> keyed by the displacement's bits: the rotation is a function of those bits
-/// alone, so a hit gives what <see cref="AxisAngle.TryCreate"/> would (its square root, division, sine and cosine skipped).
+/// alone, so a hit gives what <see cref="AxisAngle.TryCreate(Vector3, out AxisAngle)"/> would (its square root, division, sine and cosine skipped).
 /// An animation's omega applied frame after frame, or an object's constant spin, repeats its displacement.
 /// </summary>
 internal struct AxisAngleCache
@@ -69,7 +74,7 @@ internal struct AxisAngleCache
     private bool _rotates;
     private AxisAngle _rotation;
 
-    /// <summary><see cref="AxisAngle.TryCreate"/> of <paramref name="w"/>, from the cache when w's bits repeat.</summary>
+    /// <summary><see cref="AxisAngle.TryCreate(Vector3, out AxisAngle)"/> of <paramref name="w"/>, from the cache when w's bits repeat.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public bool TryGet(Vector3 w, out AxisAngle r)
     {
@@ -78,7 +83,7 @@ internal struct AxisAngleCache
         int z = BitConverter.SingleToInt32Bits(w.Z);
         if (!_filled || x != _keyX || y != _keyY || z != _keyZ)
         {
-            _rotates = AxisAngle.TryCreate(w, out _rotation);
+            _rotates = AxisAngle.TryCreate(w.X, w.Y, w.Z, out _rotation);
             _keyX = x;
             _keyY = y;
             _keyZ = z;
