@@ -184,7 +184,7 @@ public class FrameRestructuringEquivalenceTests
             Frame f = frames[fi];
             Frame g = f;
             f.Rotate(ws[wi]);
-            g.Rotate(ws[wi], ref cache);
+            g.Rotate(ws[wi].X, ws[wi].Y, ws[wi].Z, ref cache);
             Assert.True(ReferenceFrame.From(f).SameBits(g), $"cached rotate case {i}");
         }
 

@@ -74,24 +74,31 @@ internal struct AxisAngleCache
     private bool _rotates;
     private AxisAngle _rotation;
 
-    /// <summary><see cref="AxisAngle.TryCreate(Vector3, out AxisAngle)"/> of <paramref name="w"/>, from the cache when w's bits repeat.</summary>
+    /// <summary><see cref="AxisAngle.TryCreate(float, float, float, out AxisAngle)"/> of (<paramref name="wx"/>,
+    /// <paramref name="wy"/>, <paramref name="wz"/>), from the cache when their bits repeat.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public bool TryGet(Vector3 w, out AxisAngle r)
+    public bool TryGet(float wx, float wy, float wz, out AxisAngle r)
     {
-        int x = BitConverter.SingleToInt32Bits(w.X);
-        int y = BitConverter.SingleToInt32Bits(w.Y);
-        int z = BitConverter.SingleToInt32Bits(w.Z);
-        if (!_filled || x != _keyX || y != _keyY || z != _keyZ)
+        if (!_filled || BitConverter.SingleToInt32Bits(wx) != _keyX || BitConverter.SingleToInt32Bits(wy) != _keyY
+            || BitConverter.SingleToInt32Bits(wz) != _keyZ)
         {
-            _rotates = AxisAngle.TryCreate(w.X, w.Y, w.Z, out _rotation);
-            _keyX = x;
-            _keyY = y;
-            _keyZ = z;
-            _filled = true;
+            Fill(wx, wy, wz);
         }
 
         r = _rotation;
         return _rotates;
+    }
+
+    // The miss, out of line (#38): its square root, division and sine/cosine call stay out of the caller, whose prologue then
+    // saves fewer registers and zeroes no locals for the sine/cosine on every call, hit or miss.
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private void Fill(float wx, float wy, float wz)
+    {
+        _rotates = AxisAngle.TryCreate(wx, wy, wz, out _rotation);
+        _keyX = BitConverter.SingleToInt32Bits(wx);
+        _keyY = BitConverter.SingleToInt32Bits(wy);
+        _keyZ = BitConverter.SingleToInt32Bits(wz);
+        _filled = true;
     }
 }
 

@@ -74,16 +74,17 @@ public partial struct Frame
         }
     }
 
-    /// <summary><see cref="Rotate(Vector3)"/> with grotate's axis-angle rotation taken from <paramref name="cache"/> when the
-    /// lifted displacement repeats: the same bits.</summary>
+    /// <summary><see cref="Rotate(Vector3)"/> of the displacement (<paramref name="wx"/>, <paramref name="wy"/>,
+    /// <paramref name="wz"/>), with grotate's axis-angle rotation taken from <paramref name="cache"/> when the lifted
+    /// displacement repeats: the same bits. Components, not a Vector3: nothing is packed and read back (#38).</summary>
     // retail part: Frame::rotate, grotate's first half from a cache (acclient.c line 143690)
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    internal void Rotate(Vector3 w, ref AxisAngleCache cache)
+    internal void Rotate(float wx, float wy, float wz, ref AxisAngleCache cache)
     {
-        float gx = (float)((double)_m31 * w.Z + (double)_m11 * w.X + (double)_m21 * w.Y);
-        float gy = (float)((double)_m32 * w.Z + (double)_m12 * w.X + (double)_m22 * w.Y);
-        float gz = (float)((double)_m33 * w.Z + (double)_m13 * w.X + (double)_m23 * w.Y);
-        if (cache.TryGet(new Vector3(gx, gy, gz), out AxisAngle r))
+        float gx = (float)((double)_m31 * wz + (double)_m11 * wx + (double)_m21 * wy);
+        float gy = (float)((double)_m32 * wz + (double)_m12 * wx + (double)_m22 * wy);
+        float gz = (float)((double)_m33 * wz + (double)_m13 * wx + (double)_m23 * wy);
+        if (cache.TryGet(gx, gy, gz, out AxisAngle r))
         {
             GRotate(r);
         }
