@@ -10,7 +10,10 @@ namespace AcDream.Core.Benchmarks;
 /// <c>valgrind --tool=callgrind</c>, which repeat under load where wall-clock times do not. The rows are the benchmarks'
 /// own setups (and the floors beside them); the operation is run once before the N (so that the JIT, with tiering off in
 /// this project, has compiled it), and a row's count per operation is (count at 2N − count at N) / N, which cancels the
-/// start-up, the setup and the JIT. <c>count list</c> prints the rows.
+/// start-up, the setup and the JIT. <c>count list</c> prints the rows. Run it with <c>DOTNET_JitEnableOptionalRelocs=0</c>:
+/// without it, under valgrind, the JIT's optimised compile of any method that calls another fails on the call's optional
+/// rel32 relocation and falls back to MinOpts (no inlining), so the counts would be of unoptimised code
+/// (docs/performance.md, "#38: the frame path, this round").
 /// </summary>
 internal static class InstructionCounts
 {

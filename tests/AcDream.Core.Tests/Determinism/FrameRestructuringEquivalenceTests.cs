@@ -184,7 +184,7 @@ public class FrameRestructuringEquivalenceTests
             Frame f = frames[fi];
             Frame g = f;
             f.Rotate(ws[wi]);
-            g.Rotate(ws[wi], ref cache);
+            g.Rotate(ws[wi].X, ws[wi].Y, ws[wi].Z, ref cache);
             Assert.True(ReferenceFrame.From(f).SameBits(g), $"cached rotate case {i}");
         }
 
@@ -214,5 +214,39 @@ public class FrameRestructuringEquivalenceTests
 
             Assert.True(rf.SameBits(f), $"set_heading case {i}");
         }
+    }
+
+    [Fact]
+    public void LocalToGlobalAndGlobalToLocal_MatchTheReference_InlinedIntoOneChain()
+    {
+        // #38 inlines localtoglobal and globaltolocal into their callers; a chain of round trips (each point the result of
+        // the one before, as the benchmark's) and single conversions of any point, on any frame, give the same bits.
+        var rng = new Random(1807);
+        for (int i = 0; i < Cases; i++)
+        {
+            Frame f = AnyFrame(rng);
+            ReferenceFrame rf = ReferenceFrame.From(f);
+            Vector3 p = AnyVector(rng);
+            Vector3 q = p;
+            for (int k = 0; k < 4; k++)
+            {
+                p = f.GlobalToLocal(f.LocalToGlobal(p));
+                q = rf.GlobalToLocal(rf.LocalToGlobal(q));
+                AssertSameBits(q, p, $"round trip case {i}, step {k}");
+            }
+
+            Vector3 v = AnyVector(rng);
+            AssertSameBits(rf.LocalToGlobal(v), f.LocalToGlobal(v), $"localtoglobal case {i}");
+            AssertSameBits(rf.GlobalToLocal(v), f.GlobalToLocal(v), $"globaltolocal case {i}");
+        }
+    }
+
+    private static void AssertSameBits(Vector3 expected, Vector3 actual, string what)
+    {
+        Assert.True(
+            BitConverter.SingleToInt32Bits(expected.X) == BitConverter.SingleToInt32Bits(actual.X)
+            && BitConverter.SingleToInt32Bits(expected.Y) == BitConverter.SingleToInt32Bits(actual.Y)
+            && BitConverter.SingleToInt32Bits(expected.Z) == BitConverter.SingleToInt32Bits(actual.Z),
+            $"{what}: expected {expected}, got {actual}");
     }
 }

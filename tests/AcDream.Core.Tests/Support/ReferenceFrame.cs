@@ -6,7 +6,7 @@ namespace AcDream.Core.Tests.Support;
 
 /// <summary>
 /// The Frame arithmetic as it stood before the performance restructuring (combine, set_rotate, cache, IsValid, grotate, rotate,
-/// set_heading, set_vector_heading, euler_set_rotate), kept verbatim as a test-only reference: the randomised comparisons
+/// set_heading, set_vector_heading, euler_set_rotate, localtoglobal, globaltolocal), kept verbatim as a test-only reference: the randomised comparisons
 /// check that the restructured <see cref="Frame"/> gives the same bits.
 /// </summary>
 internal struct ReferenceFrame
@@ -271,5 +271,66 @@ internal struct ReferenceFrame
         Origin = new Vector3((float)(s * v.X + o.X), (float)(s * v.Y + o.Y), (float)(s * v.Z + o.Z));
         Vector3 w = sequenceOmega;
         Rotate(new Vector3((float)(s * w.X), (float)(s * w.Y), (float)(s * w.Z)));
+    }
+
+    /// <summary><c>Frame::localtoglobal</c> as it stood before it was marked for inlining (#38).</summary>
+    public readonly Vector3 LocalToGlobal(Vector3 p)
+    {
+        double z = (double)M33 * p.Z + (double)M13 * p.X + (double)M23 * p.Y + Origin.Z;
+        double y = (double)M32 * p.Z + (double)M12 * p.X + (double)M22 * p.Y + Origin.Y;
+        double x = (double)M31 * p.Z + (double)M11 * p.X + (double)M21 * p.Y + Origin.X;
+        return new Vector3((float)x, (float)y, (float)z);
+    }
+
+    /// <summary><c>Frame::globaltolocal</c> as it stood before it was marked for inlining (#38).</summary>
+    public readonly Vector3 GlobalToLocal(Vector3 p)
+    {
+        float dx = p.X - Origin.X;
+        float dy = p.Y - Origin.Y;
+        double dzWide = (double)p.Z - Origin.Z;
+        float dz = (float)dzWide;
+        double z = dzWide * M33 + (double)dx * M31 + (double)dy * M32;
+        double y = (double)dz * M23 + (double)dx * M21 + (double)dy * M22;
+        double x = (double)dz * M13 + (double)dx * M11 + (double)dy * M12;
+        return new Vector3((float)x, (float)y, (float)z);
+    }
+
+    /// <summary><c>AFrame.Combine</c> (CSequence's Frame-AFrame combine) as it stood before #38 stored the origin by
+    /// component and inlined set_rotate.</summary>
+    public void CombineAFrame(in AFrame f2)
+    {
+        double px = f2.Origin.X, py = f2.Origin.Y, pz = f2.Origin.Z;
+        float ox = (float)(M31 * pz + M11 * px + M21 * py + Origin.X);
+        float oy = (float)(M32 * pz + M12 * px + M22 * py + Origin.Y);
+        float oz = (float)(M33 * pz + M13 * px + M23 * py + Origin.Z);
+        double aw = Qw, ax = Qx, ay = Qy, az = Qz;
+        double bw = f2.Qw, bx = f2.Qx, by = f2.Qy, bz = f2.Qz;
+        float nz = (float)(ax * by + bz * aw - ay * bx + az * bw);
+        float ny = (float)(by * aw - ax * bz + az * bx + ay * bw);
+        float nx = (float)(ax * bw + aw * bx + bz * ay - by * az);
+        float nw = (float)(aw * bw - ax * bx - by * ay - bz * az);
+        Origin = new Vector3(ox, oy, oz);
+        SetRotate(nw, nx, ny, nz);
+    }
+
+    /// <summary><c>AnimSequence.ApplyPhysics</c> (CSequence::apply_physics) as it stood before #38 (the origin packed into a
+    /// Vector3, omega·s handed to rotate as one), with rotate recomputing grotate's rotation.</summary>
+    public void ApplyPhysics(double quantum, double sign, Vector3 velocity, Vector3 omega)
+    {
+        double s = Math.Abs(quantum);
+        if (sign < 0.0)
+        {
+            s = -s;
+        }
+
+        Vector3 o = Origin;
+        double dx = s * velocity.X;
+        float dy = (float)(s * velocity.Y);
+        float dz = (float)(s * velocity.Z);
+        Origin = new Vector3((float)(dx + o.X), (float)((double)dy + o.Y), (float)((double)dz + o.Z));
+        float wx = (float)(s * omega.X);
+        float wy = (float)(s * omega.Y);
+        float wz = (float)(s * omega.Z);
+        Rotate(new Vector3(wx, wy, wz));
     }
 }

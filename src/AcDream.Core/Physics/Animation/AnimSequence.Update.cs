@@ -255,15 +255,17 @@ public sealed partial class AnimSequence
             s = -s;
         }
 
-        Vector3 o = frame.Origin;
+        // The origin is read and written a component at a time and omega·s handed on as components: no Vector3 packing (#38).
         double dx = s * _velocity.X;
         float dy = (float)(s * _velocity.Y);
         float dz = (float)(s * _velocity.Z);
-        frame.Origin = new Vector3((float)(dx + o.X), (float)((double)dy + o.Y), (float)((double)dz + o.Z));
+        frame.Origin.X = (float)(dx + frame.Origin.X);
+        frame.Origin.Y = (float)((double)dy + frame.Origin.Y);
+        frame.Origin.Z = (float)((double)dz + frame.Origin.Z);
         float wx = (float)(s * _omega.X);
         float wy = (float)(s * _omega.Y);
         float wz = (float)(s * _omega.Z);
-        frame.Rotate(new Vector3(wx, wy, wz), ref _rotation);
+        frame.Rotate(wx, wy, wz, ref _rotation);
     }
 
     // The axis-angle rotation of the last omega step (Frame::grotate's first half), kept while its displacement repeats.
@@ -272,20 +274,28 @@ public sealed partial class AnimSequence
     /// <summary>Queues on the hook object each hook of <paramref name="animFrame"/> whose direction is both or
     /// <paramref name="dir"/>, in list order.</summary>
     // retail: CSequence::execute_hooks (acclient.c:339682)
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
     internal void ExecuteHooks(AnimFrame? animFrame, int dir)
     {
         PhysicsObj? obj = _hookObj;
         // non-retail: a frame outside the animation (retail's null AnimFrame, only from an animation without frames) has no
         // hooks
-        if (obj is not null && animFrame is not null)
+        if (obj is not null && animFrame is not null && animFrame.Hooks is not null)
         {
-            for (AnimHook? i = animFrame.Hooks; i is not null; i = i.Next)
+            QueueHooks(obj, animFrame.Hooks, dir);
+        }
+    }
+
+    // execute_hooks' walk of the frame's hook list, out of line (#38): the update inlines only the tests above, which on
+    // most frames (no hook object, or a frame without hooks) are all there is.
+    private static void QueueHooks(PhysicsObj obj, AnimHook hooks, int dir)
+    {
+        for (AnimHook? i = hooks; i is not null; i = i.Next)
+        {
+            int d = (int)i.Direction;
+            if (d == 0 || dir == d)
             {
-                int d = (int)i.Direction;
-                if (d == 0 || dir == d)
-                {
-                    AddAnimHook(obj, i);
-                }
+                AddAnimHook(obj, i);
             }
         }
     }

@@ -127,6 +127,7 @@ internal sealed class AnimSequenceNode
     /// <summary>The root-motion step of frame <paramref name="fn"/>, or false when there is no animation or the frame is out
     /// of range (retail returns a null pointer).</summary>
     // retail: AnimSequenceNode::get_pos_frame (acclient.c:340981)
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)] // #38
     internal bool TryGetPosFrame(int fn, out AFrame frame)
     {
         AnimClip? anim = Anim;

@@ -101,8 +101,10 @@ public readonly struct AFrame : IEquatable<AFrame>
         float ny = (float)(by * aw - ax * bz + az * bx + ay * bw);
         float nx = (float)(ax * bw + aw * bx + bz * ay - by * az);
         float nw = (float)(aw * bw - ax * bx - by * ay - bz * az);
-        frame.Origin = new Vector3(ox, oy, oz);
-        frame.SetRotate(nw, nx, ny, nz);
+        frame.Origin.X = ox; // by component, not packed into a Vector3 (#38); before set_rotate, whose test reads it
+        frame.Origin.Y = oy;
+        frame.Origin.Z = oz;
+        frame.SetRotateInlined(nw, nx, ny, nz);
     }
 
     /// <summary>Sets <paramref name="frame"/> to the frame R with R ∘ <paramref name="f2"/> = frame (the inverse of
@@ -125,7 +127,9 @@ public readonly struct AFrame : IEquatable<AFrame>
         float gx = (float)(vz * frame.M31 + vx * frame.M11 + vy * frame.M21);
         float gy = (float)(vz * frame.M32 + vx * frame.M12 + vy * frame.M22);
         double gz = vz * frame.M33 + vx * frame.M13 + vy * frame.M23;
-        frame.Origin = new Vector3((float)(gx + (double)combinedOrigin.X), (float)(gy + (double)combinedOrigin.Y), (float)(gz + combinedOrigin.Z));
+        frame.Origin.X = (float)(gx + (double)combinedOrigin.X);
+        frame.Origin.Y = (float)(gy + (double)combinedOrigin.Y);
+        frame.Origin.Z = (float)(gz + combinedOrigin.Z);
     }
 
     /// <summary>Exact component equality (float equality).</summary>

@@ -35,9 +35,14 @@ internal readonly struct AxisAngle
     /// <summary>Works out the rotation of <paramref name="w"/>; false (nothing to do) when |w|² is below EPSILON².</summary>
     // retail: Frame::grotate (acclient.c:357421), up to the quaternion product
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static bool TryCreate(Vector3 w, out AxisAngle r)
+    public static bool TryCreate(Vector3 w, out AxisAngle r) => TryCreate(w.X, w.Y, w.Z, out r);
+
+    /// <summary><see cref="TryCreate(Vector3, out AxisAngle)"/> on the displacement's components (wx, wy, wz).</summary>
+    // retail: Frame::grotate (acclient.c:357421), up to the quaternion product
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool TryCreate(float wx, float wy, float wz, out AxisAngle r)
     {
-        double mag2 = (double)w.X * w.X + (double)w.Y * w.Y + (double)w.Z * w.Z;
+        double mag2 = (double)wx * wx + (double)wy * wy + (double)wz * wz;
         if (mag2 < (double)PhysicsGlobals.Epsilon * PhysicsGlobals.Epsilon)
         {
             r = default;
@@ -49,9 +54,9 @@ internal readonly struct AxisAngle
         double half = theta * 0.5;
         (double s, double cosHalf) = Math.SinCos(half); // the same bits as Sin and Cos (SinCosEquivalenceTests)
         float c = (float)cosHalf;
-        float f = (float)(s * w.X * thetaInv);
-        float g = (float)(thetaInv * s * w.Y);
-        double h = s * thetaInv * w.Z;
+        float f = (float)(s * wx * thetaInv);
+        float g = (float)(thetaInv * s * wy);
+        double h = s * thetaInv * wz;
         r = new AxisAngle(c, f, g, h);
         return true;
     }
@@ -59,7 +64,7 @@ internal readonly struct AxisAngle
 
 /// <summary>
 /// A one-entry cache of <see cref="AxisAngle"/> keyed by the displacement's bits: the rotation is a function of those bits
-/// alone, so a hit gives what <see cref="AxisAngle.TryCreate"/> would (its square root, division, sine and cosine skipped).
+/// alone, so a hit gives what <see cref="AxisAngle.TryCreate(Vector3, out AxisAngle)"/> would (its square root, division, sine and cosine skipped).
 /// An animation's omega applied frame after frame, or an object's constant spin, repeats its displacement.
 /// </summary>
 internal struct AxisAngleCache
@@ -69,24 +74,31 @@ internal struct AxisAngleCache
     private bool _rotates;
     private AxisAngle _rotation;
 
-    /// <summary><see cref="AxisAngle.TryCreate"/> of <paramref name="w"/>, from the cache when w's bits repeat.</summary>
+    /// <summary><see cref="AxisAngle.TryCreate(float, float, float, out AxisAngle)"/> of (<paramref name="wx"/>,
+    /// <paramref name="wy"/>, <paramref name="wz"/>), from the cache when their bits repeat.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public bool TryGet(Vector3 w, out AxisAngle r)
+    public bool TryGet(float wx, float wy, float wz, out AxisAngle r)
     {
-        int x = BitConverter.SingleToInt32Bits(w.X);
-        int y = BitConverter.SingleToInt32Bits(w.Y);
-        int z = BitConverter.SingleToInt32Bits(w.Z);
-        if (!_filled || x != _keyX || y != _keyY || z != _keyZ)
+        if (!_filled || BitConverter.SingleToInt32Bits(wx) != _keyX || BitConverter.SingleToInt32Bits(wy) != _keyY
+            || BitConverter.SingleToInt32Bits(wz) != _keyZ)
         {
-            _rotates = AxisAngle.TryCreate(w, out _rotation);
-            _keyX = x;
-            _keyY = y;
-            _keyZ = z;
-            _filled = true;
+            Fill(wx, wy, wz);
         }
 
         r = _rotation;
         return _rotates;
+    }
+
+    // The miss, out of line (#38): its square root, division and sine/cosine call stay out of the caller, whose prologue then
+    // saves fewer registers and zeroes no locals for the sine/cosine on every call, hit or miss.
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private void Fill(float wx, float wy, float wz)
+    {
+        _rotates = AxisAngle.TryCreate(wx, wy, wz, out _rotation);
+        _keyX = BitConverter.SingleToInt32Bits(wx);
+        _keyY = BitConverter.SingleToInt32Bits(wy);
+        _keyZ = BitConverter.SingleToInt32Bits(wz);
+        _filled = true;
     }
 }
 

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics.Spatial;
 
@@ -48,8 +49,7 @@ public partial struct Frame
         float dz = (float)(((double)_m33 + _m13) * 0.0 + _m23);
         double rad = heading * HeadingMath.DegToRad;
         (double sin, double cos) = Math.SinCos(rad); // the same bits as Sin and Cos (SinCosEquivalenceTests)
-        var direction = new Vector3((float)sin, (float)cos, dz);
-        SetVectorHeading(direction);
+        SetVectorHeadingInlined((float)sin, (float)cos, dz);
     }
 
     /// <summary>
@@ -57,18 +57,29 @@ public partial struct Frame
     /// from its z. A vector shorter than EPSILON leaves the frame unchanged.
     /// </summary>
     // retail: Frame::set_vector_heading (acclient.c:357667)
-    public void SetVectorHeading(Vector3 heading)
+    public void SetVectorHeading(Vector3 heading) => SetVectorHeadingInlined(heading.X, heading.Y, heading.Z);
+
+    // set_vector_heading's body on the vector's components, inlined into set_heading (#38): one body from the heading to the
+    // cached matrix, no call and no Vector3 packing between them.
+    // retail: Frame::set_vector_heading (acclient.c:357667)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void SetVectorHeadingInlined(float hx, float hy, float hz)
     {
-        Vector3 n = heading;
-        if (VectorMath.NormalizeCheckSmall(ref n))
+        // VectorMath.NormalizeCheckSmall's arithmetic, written out on the components (a NaN length is "small" there too).
+        double len = Math.Sqrt((double)hx * hx + (double)hy * hy + (double)hz * hz);
+        if (!(len >= PhysicsGlobals.Epsilon))
         {
             return;
         }
 
-        float yaw = (float)(-HeadingMath.CompassFromAtan2(Math.Atan2(n.Y, n.X)) * HeadingMath.DegToRad);
+        double inv = 1.0 / len;
+        float nx = (float)(inv * hx);
+        float ny = (float)(inv * hy);
+        float nz = (float)(inv * hz);
+        float yaw = (float)(-HeadingMath.CompassFromAtan2(Math.Atan2(ny, nx)) * HeadingMath.DegToRad);
         // Divergence: retail passes n.z straight to asin; a normalised z one ulp past ±1 would give NaN there and set_rotate
         // would silently keep the old rotation. We clamp to [-1, 1] so such a vector still sets the heading.
-        double sinPitch = Math.Clamp((double)n.Z, -1.0, 1.0);
+        double sinPitch = Math.Clamp((double)nz, -1.0, 1.0);
         float pitch = (float)(ExactAsin(sinPitch) * HeadingMath.RadToDeg * HeadingMath.DegToRad);
         EulerSetRotateXyzNoRoll(pitch, yaw);
     }
@@ -77,6 +88,7 @@ public partial struct Frame
     /// <see cref="EulerSetRotate"/> for order 0 with y = +0 (set_vector_heading's call): the same arithmetic with the order
     /// decoded at compile time, cos(+0) = 1 and sin(+0) = +0 written out, and each sine and cosine of one angle from SinCos.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void EulerSetRotateXyzNoRoll(float x, float z)
     {
         double ti = x * 0.5;
@@ -97,7 +109,7 @@ public partial struct Frame
         float aj = (float)(cc * sj + (double)ss * cj);
         float ak = (float)((double)cs * cj - sc * sj);
         float w = (float)(ss * sj + (double)cc * cj);
-        SetRotate(w, ai, aj, ak);
+        SetRotateInlined(w, ai, aj, ak);
     }
 
     // sin, cos and asin have exact values at +0 (C99 Annex F: sin(+0) = +0, cos(+0) = 1, asin(+0) = +0), written out so that

@@ -14,8 +14,8 @@ public partial struct Frame
     /// </summary>
     internal void CombineNoRenormalise(in Frame f1, in Frame f2)
     {
-        CombineProduct(f1, f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz);
-        Origin = origin;
+        CombineProduct(f1, f2, out float ox, out float oy, out float oz, out float nw, out float nx, out float ny, out float nz);
+        Origin = new Vector3(ox, oy, oz);
         StoreUnnormalised(nw, nx, ny, nz);
     }
 

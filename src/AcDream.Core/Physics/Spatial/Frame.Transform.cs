@@ -8,6 +8,7 @@ public partial struct Frame
 {
     /// <summary>Maps a local point to parent (global) coordinates: M * p + origin.</summary>
     // retail: Frame::localtoglobal (acclient.c:143701)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // #38: inlined, the caller keeps the point in registers
     public readonly Vector3 LocalToGlobal(Vector3 p)
     {
         double z = (double)_m33 * p.Z + (double)_m13 * p.X + (double)_m23 * p.Y + Origin.Z;
@@ -28,6 +29,7 @@ public partial struct Frame
 
     /// <summary>Maps a parent (global) point to local coordinates: Mᵀ * (p - origin).</summary>
     // retail: Frame::globaltolocal (acclient.c:143717)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // #38: inlined, the caller keeps the point in registers
     public readonly Vector3 GlobalToLocal(Vector3 p)
     {
         float dx = p.X - Origin.X;
@@ -65,19 +67,24 @@ public partial struct Frame
         float gx = (float)((double)_m31 * w.Z + (double)_m11 * w.X + (double)_m21 * w.Y);
         float gy = (float)((double)_m32 * w.Z + (double)_m12 * w.X + (double)_m22 * w.Y);
         float gz = (float)((double)_m33 * w.Z + (double)_m13 * w.X + (double)_m23 * w.Y);
-        GRotate(new Vector3(gx, gy, gz));
+        // grotate on the lifted components as they are (not packed into a Vector3 and read back).
+        if (AxisAngle.TryCreate(gx, gy, gz, out AxisAngle r))
+        {
+            GRotate(r);
+        }
     }
 
-    /// <summary><see cref="Rotate(Vector3)"/> with grotate's axis-angle rotation taken from <paramref name="cache"/> when the
-    /// lifted displacement repeats: the same bits.</summary>
+    /// <summary><see cref="Rotate(Vector3)"/> of the displacement (<paramref name="wx"/>, <paramref name="wy"/>,
+    /// <paramref name="wz"/>), with grotate's axis-angle rotation taken from <paramref name="cache"/> when the lifted
+    /// displacement repeats: the same bits. Components, not a Vector3: nothing is packed and read back (#38).</summary>
     // retail part: Frame::rotate, grotate's first half from a cache (acclient.c line 143690)
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    internal void Rotate(Vector3 w, ref AxisAngleCache cache)
+    internal void Rotate(float wx, float wy, float wz, ref AxisAngleCache cache)
     {
-        float gx = (float)((double)_m31 * w.Z + (double)_m11 * w.X + (double)_m21 * w.Y);
-        float gy = (float)((double)_m32 * w.Z + (double)_m12 * w.X + (double)_m22 * w.Y);
-        float gz = (float)((double)_m33 * w.Z + (double)_m13 * w.X + (double)_m23 * w.Y);
-        if (cache.TryGet(new Vector3(gx, gy, gz), out AxisAngle r))
+        float gx = (float)((double)_m31 * wz + (double)_m11 * wx + (double)_m21 * wy);
+        float gy = (float)((double)_m32 * wz + (double)_m12 * wx + (double)_m22 * wy);
+        float gz = (float)((double)_m33 * wz + (double)_m13 * wx + (double)_m23 * wy);
+        if (cache.TryGet(gx, gy, gz, out AxisAngle r))
         {
             GRotate(r);
         }
@@ -103,7 +110,7 @@ public partial struct Frame
     internal void GRotate(in AxisAngle r)
     {
         GRotateProduct(r, out float nw, out float nx, out float ny, out float nz);
-        SetRotate(nw, nx, ny, nz);
+        SetRotateInlined(nw, nx, ny, nz);
     }
 
     /// <summary>grotate's product: the axis-angle quaternion <paramref name="r"/> times this quaternion (not normalised).</summary>

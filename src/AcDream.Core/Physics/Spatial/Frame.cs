@@ -223,10 +223,16 @@ public partial struct Frame : IEquatable<Frame>
     /// </summary>
     /// <returns>True when the new rotation was accepted.</returns>
     // retail: Frame::set_rotate (acclient.c:357062)
-    public bool SetRotate(float qw, float qx, float qy, float qz)
+    public bool SetRotate(float qw, float qx, float qy, float qz) => SetRotateInlined(qw, qx, qy, qz);
+
+    // set_rotate's body, inlined into the frame operations of the tick (combine, grotate, rotate, set_heading, ...) so that
+    // they pay no call, no argument moves and no spills around it (#38); the public SetRotate is the same body behind a call.
+    // Retail stores the normalised quaternion, tests IsValid and restores the old one on failure; testing the new values
+    // before storing them is the same, so the rejected path has nothing to undo: it only returns false.
+    // retail: Frame::set_rotate (acclient.c:357062)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal bool SetRotateInlined(float qw, float qx, float qy, float qz)
     {
-        // Retail stores the normalised quaternion, tests IsValid and restores the old one on failure; testing the new values
-        // before storing them is the same.
         double inv = 1.0 / Math.Sqrt((double)qw * qw + (double)qx * qx + (double)qy * qy + (double)qz * qz);
         float w = (float)(qw * inv);
         float x = (float)(qx * inv);
@@ -266,27 +272,33 @@ public partial struct Frame : IEquatable<Frame>
     // retail: Frame::combine (acclient.c:319448)
     public void Combine(in Frame f1, in Frame f2)
     {
-        // f1 or f2 may be this frame: everything is read before anything is written.
-        CombineProduct(f1, f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz);
-        Origin = origin;
-        SetRotate(nw, nx, ny, nz);
+        // f1 or f2 may be this frame: everything is read before anything is written. The origin is stored a component at a
+        // time (not packed into a Vector3 and stored as one), before set_rotate, whose validity test reads it.
+        CombineProduct(f1, f2, out float ox, out float oy, out float oz, out float nw, out float nx, out float ny, out float nz);
+        Origin.X = ox;
+        Origin.Y = oy;
+        Origin.Z = oz;
+        SetRotateInlined(nw, nx, ny, nz);
     }
 
     /// <summary>combine's arithmetic: f2's origin lifted by f1, and the quaternion product f1.q * f2.q (not normalised).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void CombineProduct(in Frame f1, in Frame f2, out Vector3 origin, out float nw, out float nx, out float ny, out float nz)
+    private static void CombineProduct(in Frame f1, in Frame f2, out float ox, out float oy, out float oz,
+        out float nw, out float nx, out float ny, out float nz)
     {
         double px = f2.Origin.X, py = f2.Origin.Y, pz = f2.Origin.Z;
-        double ox = f1._m31 * pz + f1._m11 * px + f1._m21 * py + f1.Origin.X;
-        double oy = f1._m32 * pz + f1._m12 * px + f1._m22 * py + f1.Origin.Y;
-        double oz = f1._m33 * pz + f1._m13 * px + f1._m23 * py + f1.Origin.Z;
+        double gx = f1._m31 * pz + f1._m11 * px + f1._m21 * py + f1.Origin.X;
+        double gy = f1._m32 * pz + f1._m12 * px + f1._m22 * py + f1.Origin.Y;
+        double gz = f1._m33 * pz + f1._m13 * px + f1._m23 * py + f1.Origin.Z;
         double aw = f1._qw, ax = f1._qx, ay = f1._qy, az = f1._qz;
         double bw = f2._qw, bx = f2._qx, by = f2._qy, bz = f2._qz;
         nz = (float)(by * ax + bz * aw - ay * bx + az * bw);
         ny = (float)(by * aw - bz * ax + az * bx + ay * bw);
         nx = (float)(aw * bx + bz * ay + bw * ax - by * az);
         nw = (float)(aw * bw - bx * ax - by * ay - bz * az);
-        origin = new Vector3((float)ox, (float)oy, (float)oz);
+        ox = (float)gx;
+        oy = (float)gy;
+        oz = (float)gz;
     }
 
     /// <summary>Returns <paramref name="f1"/> ∘ <paramref name="f2"/>; see <see cref="Combine(in Frame, in Frame)"/>.</summary>

@@ -33,6 +33,7 @@ internal static class HeadingMath
     /// and for 360 ≤ x &lt; 720 it is x − 360, which double subtraction gives exactly (Sterbenz: x is within a factor of two
     /// of 360). An atan2 angle always lands in that range (270 ≤ x ≤ 630); anything else takes <c>%</c>.
     /// </summary>
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
     internal static double Fmod360(double x)
     {
         if (x >= 0.0 && x < 720.0)
