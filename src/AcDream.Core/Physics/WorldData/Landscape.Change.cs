@@ -18,7 +18,7 @@ public sealed partial class Landscape
     /// lost in their cells come back.
     /// </summary>
     /// <param name="position">The player's position: a valid cell id (0 releases everything, as retail's reset) and a frame
-    /// in the position domain (<see cref="InputLimits"/>).</param>
+    /// in the position domain (<see cref="InputLimits"/>; not read while the cell is the last call's).</param>
     /// <param name="blocking">True for a teleport or a login: everything is released first, then built again around the
     /// new cell (retail releases on the blocking call and builds once its prefetch completes; the library's data source is
     /// synchronous, so both happen in this call).</param>
@@ -42,16 +42,19 @@ public sealed partial class Landscape
                 Array.Empty<WorldBlock>(), Array.Empty<uint>()) : LandscapeChange.SameCell;
         }
 
+        // The frame is not read while the cell stays the same (retail compares the cell id only): the per-frame call costs
+        // one compare.
+        if (_loadPosCellId == cellId && _currCell is not null)
+        {
+            return LandscapeChange.SameCell;
+        }
+
         if (!LandDefs.InboundValidCellId(cellId))
         {
             throw new ArgumentException($"Cell 0x{cellId:X8} is not a cell of the world.", nameof(position));
         }
 
         InputLimits.ThrowIfOutside(position, nameof(position));
-        if (_loadPosCellId == cellId && _currCell is not null)
-        {
-            return LandscapeChange.SameCell;
-        }
 
         return Change(position, blocking);
     }
