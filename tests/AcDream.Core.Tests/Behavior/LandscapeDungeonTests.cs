@@ -1,3 +1,4 @@
+using System.Linq;
 using System.Numerics;
 using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Objects;
@@ -23,6 +24,8 @@ public class LandscapeDungeonTests
     private static Landscape Make(out PhysicsWorld world, out WorldCells cells) =>
         LandscapeEntries.Landscape(RoomSceneEntries.Source(), out world, out cells, radius: 1);
 
+    private static uint[] Visible(Landscape l) => l.VisibleCells.Select(c => c.CellId).ToArray();
+
     [Fact]
     public void ACellThatSeesOutside_KeepsTheLandscape_AroundTheOutdoorCellUnderIt()
     {
@@ -33,13 +36,25 @@ public class LandscapeDungeonTests
         // get_outside_cell_id: block-local (103, 103) is cell x 4, y 4 -> 4 * 8 + 4 + 1 = 0x25.
         Assert.Equal(0x80800025u, l.LoadedCellId);
         Assert.Equal(RoomScene.Room, l.CurrentCellId);
-        Assert.Null(l.Interior);
         Assert.Equal(1, cells.Terrain.LandBlockCount);
+        // The room and its visible list (the corridor), then the block's stab list (the door sees both): no repeats.
+        Assert.Equal(new[] { RoomScene.Room, RoomScene.Corridor }, Visible(l));
+        Assert.Equal(new[] { RoomScene.Room, RoomScene.Corridor }, c.CellsEntered);
         Assert.NotNull(cells.GetEnvCell(RoomScene.Corridor));
     }
 
     [Fact]
-    public void ADungeonCell_ReleasesTheLandscape_AndHoldsItsCellsAlone()
+    public void Outdoors_TheVisibleCells_AreTheBuildingsStabLists()
+    {
+        Landscape l = Make(out _, out WorldCells cells);
+        LandscapeChange c = l.ChangePosition(new Position(0x80800001u, new Frame(new Vector3(10f, 10f, BspScene.Ground), Quaternion.Identity)));
+        // The door (RoomSceneEntries: stab list 0x0100, 0x0101) sees both cells: retail's LScape::grab_visible_cells' first pass.
+        Assert.Equal(new[] { RoomScene.Room, RoomScene.Corridor }, c.CellsEntered);
+        Assert.Equal(2, cells.EnvCellCount);
+    }
+
+    [Fact]
+    public void ADungeonCell_ReleasesTheLandscape_AndHoldsItsVisibleCells()
     {
         Landscape l = Make(out _, out WorldCells cells);
         l.ChangePosition(InRoom);
@@ -47,19 +62,21 @@ public class LandscapeDungeonTests
         Assert.False(l.HasGrid);
         Assert.Equal(0u, l.LoadedCellId);
         Assert.Equal(0, cells.Terrain.LandBlockCount);
-        Assert.NotNull(l.Interior);
-        Assert.False(l.Interior!.Outdoors);
+        // The corridor and the room it sees stay visible (not reloaded, not released).
+        Assert.Equal(new[] { RoomScene.Room, RoomScene.Corridor }, Visible(l));
+        Assert.Empty(c.CellsEntered);
+        Assert.Empty(c.CellsReleased);
         Assert.Equal(2, cells.EnvCellCount);
         Assert.Equal(RoomScene.Corridor, l.CurrentCellId);
         Assert.Equal(new[] { 0x8080FFFFu }, c.Released);
-        Assert.Same(l.Interior, Assert.Single(c.Built));
+        Assert.Empty(c.Built);
 
-        // Back into the room: the interior goes, the landscape comes back.
+        // Back into the room: the landscape comes back.
         LandscapeChange back = l.ChangePosition(InRoom);
-        Assert.Null(l.Interior);
         Assert.True(l.HasGrid);
         Assert.Equal(1, cells.Terrain.LandBlockCount);
-        Assert.Equal(new[] { 0x8080FFFFu }, back.Released);
+        Assert.Single(back.Built);
+        Assert.Empty(back.Released);
     }
 
     [Fact]
@@ -71,12 +88,12 @@ public class LandscapeDungeonTests
         l.ChangePosition(InCorridor);
         Assert.True(l.HasGrid);
         Assert.Equal(1, cells.Terrain.LandBlockCount);
-        Assert.Null(l.Interior);
         Assert.Equal(RoomScene.Corridor, l.CurrentCellId);
+        Assert.Equal(new[] { RoomScene.Room, RoomScene.Corridor }, Visible(l));
     }
 
     [Fact]
-    public void AnObjectInTheCorridor_ComesBackWhenTheDungeonIsHeldAlone()
+    public void AnObjectInTheCorridor_StaysWhenTheDungeonIsHeldAlone()
     {
         Landscape l = Make(out PhysicsWorld world, out _);
         l.ChangePosition(InRoom);

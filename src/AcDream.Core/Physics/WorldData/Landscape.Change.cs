@@ -36,10 +36,9 @@ public sealed partial class Landscape
         if (cellId == 0)
         {
             // retail: CellManager::Reset
-            bool had = _landBlocks is not null || _interior is not null || _currCell is not null;
+            bool had = _landBlocks is not null || _loader.VisibleCells.Count != 0 || _currCell is not null;
             ReleaseAll();
-            return had ? new LandscapeChange(LandscapeStatus.Released, Array.Empty<uint>(), Array.Empty<uint>(),
-                Array.Empty<WorldBlock>(), Array.Empty<uint>()) : LandscapeChange.SameCell;
+            return had ? LandscapeChange.ReleasedAll : LandscapeChange.SameCell;
         }
 
         // The frame is not read while the cell stays the same (retail compares the cell id only): the per-frame call costs
@@ -65,13 +64,14 @@ public sealed partial class Landscape
         uint blockId = LandDefs.BlockIdOf(cellId);
         bool outdoors = (cellId & 0xFFFFu) < LandDefs.FirstEnvCell;
 
-        // 1. Where the grid goes, read before anything changes.
-        bool seenOutside = false;
-        if (!outdoors && !FindIndoorCell(cellId, out seenOutside))
+        // 1. Where the grid goes, read before anything changes. An indoor cell is read first: its flags decide.
+        WorldLoader.VisibleCell? indoor = null;
+        if (!outdoors && (indoor = FindIndoorCell(cellId)) is null)
         {
             return LandscapeChange.NoCell;
         }
 
+        bool seenOutside = indoor is not null && (indoor.Entry.Flags & EnvCellEntry.SeenOutsideFlag) != 0;
         bool releaseGrid = blocking;
         uint loadPoint = 0;
         bool gridMoves = false;
@@ -107,36 +107,53 @@ public sealed partial class Landscape
             }
         }
 
-        // 2. The cell's own block must be in the world afterwards: outdoors, at full detail; indoors, at full detail or as a
-        // dungeon's interior.
-        bool cellBlockFull = WillBeFull(plan, grid, blockId);
-        if (outdoors && !cellBlockFull)
+        // 2. An outdoor cell's block must be at full detail afterwards.
+        if (outdoors && !WillBeFull(plan, grid, blockId))
         {
             return LandscapeChange.NoCell;
         }
 
-        WorldLoader.PendingBlock? interior = null;
-        bool keepInterior = false;
-        if (!outdoors && !cellBlockFull)
+        // 3. The visible cells after the change, and the ones to read: the indoor cell and its visible list (retail
+        // CEnvCell::grab_visible_cells), then, outdoors or seeing outside, every full-detail block's stab list (the doors of
+        // its buildings: LScape::grab_visible_cells' first pass).
+        List<uint> visible = _visibleScratch;
+        visible.Clear();
+        if (indoor is not null)
         {
-            keepInterior = _interior is not null && _interior.Pending.BlockId == blockId;
-            if (!keepInterior)
+            AddVisible(visible, cellId);
+            foreach (uint id in indoor.Entry.VisibleCells)
             {
-                interior = _loader.Read(blockId, outdoors: false);
+                AddVisible(visible, id);
             }
         }
 
-        // 3. Change the world: the old cell's interior, the grid (releases, shift, levels of detail), the new interior.
-        // Scratch lists kept by the landscape: a cell change without a shift allocates nothing.
+        bool grabLandscape = loadPoint != 0;
+        if (grabLandscape)
+        {
+            AddStabLists(visible, plan, grid);
+        }
+
+        var read = new Dictionary<uint, WorldLoader.VisibleCell?>();
+        if (indoor is not null && _loader.GetVisibleCell(cellId) is null)
+        {
+            read[cellId] = indoor;
+        }
+
+        foreach (uint id in visible)
+        {
+            if (_loader.GetVisibleCell(id) is null && !read.ContainsKey(id))
+            {
+                read[id] = _loader.ReadVisibleCell(id);
+            }
+        }
+
+        // 4. Change the world: the grid (releases, shift, levels of detail), the visible cells, then the landscape's two
+        // passes over the full-detail blocks and the flush of the visible cells. Scratch lists kept by the landscape: a cell
+        // change without a shift allocates little.
         List<uint> released = _releasedScratch;
         List<WorldLoader.LoadedBlock> built = _builtScratch;
         released.Clear();
         built.Clear();
-        if (!keepInterior)
-        {
-            ReleaseInterior(released);
-        }
-
         if (releaseGrid)
         {
             ReleaseGrid(released);
@@ -153,16 +170,12 @@ public sealed partial class Landscape
             LoadedCellId = loadPoint;
         }
 
-        if (interior is not null)
-        {
-            _interior = _loader.AddCells(interior);
-            built.Add(_interior);
-        }
-
-        // 4. The cell's visible cells: the landscape's two passes (outdoors, or a cell seeing outside), or the interior's.
+        var cellsReleased = new List<uint>();
+        var cellsEntered = new List<uint>();
+        _loader.SetVisibleCells(visible, read, cellsReleased, cellsEntered);
         List<WorldLoader.LoadedBlock> grab = _grabScratch;
         grab.Clear();
-        if (loadPoint != 0 && _landBlocks is not null)
+        if (grabLandscape && _landBlocks is not null)
         {
             foreach (LandscapeBlock? b in _landBlocks)
             {
@@ -173,16 +186,12 @@ public sealed partial class Landscape
             }
         }
 
-        if (_interior is not null)
-        {
-            grab.Add(_interior);
-        }
-
         _loader.GrabVisibleCells(grab);
         grab.Clear();
+        _loader.FlushCells();
         _currCell = _loader.Cells.GetVisible(cellId);
         _loadPosCellId = cellId;
-        if (!gridMoves && built.Count == 0 && released.Count == 0)
+        if (!gridMoves && built.Count == 0 && released.Count == 0 && cellsEntered.Count == 0 && cellsReleased.Count == 0)
         {
             return LandscapeChange.Moved;
         }
@@ -193,9 +202,66 @@ public sealed partial class Landscape
             builtBlocks[i] = built[i].Block!;
         }
 
-        return new LandscapeChange(LandscapeStatus.Updated, entered, left, builtBlocks, released.ToArray());
+        return new LandscapeChange(LandscapeStatus.Updated, entered, left, builtBlocks, released.ToArray(),
+            cellsEntered.ToArray(), cellsReleased.ToArray());
     }
 
+    private static void AddVisible(List<uint> visible, uint id)
+    {
+        if (!visible.Contains(id))
+        {
+            visible.Add(id);
+        }
+    }
+
+    // The stab lists of the blocks at full detail after the plan (or in the current grid), in grid order: each block's
+    // buildings' doors' visible cells, without repeats.
+    // retail: CLandBlock::grab_visible_cells (acclient.c:351600) over the stab list CBuildingObj::add_to_stablist
+    // (acclient.c:719040) and CBldPortal::add_to_stablist (acclient.c:362422) built
+    private static void AddStabLists(List<uint> visible, SlotPlan[]? plan, LandscapeBlock?[]? grid)
+    {
+        if (plan is not null)
+        {
+            foreach (SlotPlan s in plan)
+            {
+                if (s.Block is not null && s.Size == 1)
+                {
+                    AddStabList(visible, s.Promote?.Info ?? s.Block.Loaded?.Pending.Info);
+                }
+            }
+        }
+        else if (grid is not null)
+        {
+            foreach (LandscapeBlock? b in grid)
+            {
+                if (b is not null && b.IsFullDetail)
+                {
+                    AddStabList(visible, b.Loaded?.Pending.Info);
+                }
+            }
+        }
+    }
+
+    private static void AddStabList(List<uint> visible, LandBlockInfoEntry? info)
+    {
+        if (info is null)
+        {
+            return;
+        }
+
+        foreach (BuildingInfo b in info.Buildings)
+        {
+            foreach (BldPortalInfo door in b.Portals)
+            {
+                foreach (uint id in door.VisibleCells)
+                {
+                    AddVisible(visible, id);
+                }
+            }
+        }
+    }
+
+    private readonly List<uint> _visibleScratch = new();
     private readonly List<uint> _releasedScratch = new();
     private readonly List<WorldLoader.LoadedBlock> _builtScratch = new();
     private readonly List<WorldLoader.LoadedBlock> _grabScratch = new();
@@ -285,42 +351,24 @@ public sealed partial class Landscape
         return false;
     }
 
-    // The indoor cell's seen_outside flag, from the loaded cells of its block or from its entry; false when the cell is not
-    // one of its block's cells or the source lacks it.
-    private bool FindIndoorCell(uint cellId, out bool seenOutside)
+    // The indoor cell from the visible-cell table, or read from the source (null when the source lacks it or it is not one
+    // of its block's cells).
+    private WorldLoader.VisibleCell? FindIndoorCell(uint cellId)
     {
-        seenOutside = false;
-        WorldLoader.LoadedBlock? loaded = _loader.GetLoaded(LandDefs.BlockIdOf(cellId));
-        if (loaded is not null)
+        WorldLoader.VisibleCell? visible = _loader.GetVisibleCell(cellId);
+        if (visible is not null)
         {
-            foreach (EnvCellEntry e in loaded.Pending.EnvEntries)
-            {
-                if (e.Id == cellId)
-                {
-                    seenOutside = (e.Flags & EnvCellEntry.SeenOutsideFlag) != 0;
-                    return true;
-                }
-            }
-
-            return false;
+            return visible;
         }
 
         uint blockId = LandDefs.BlockIdOf(cellId);
         if (!_source.TryGetEntry(blockId, out ReadOnlyMemory<byte> landBytes) || !LandBlockEntry.UnPack(landBytes.Span).HasInfo
             || !_source.TryGetEntry((blockId & 0xFFFF0000u) | 0xFFFEu, out ReadOnlyMemory<byte> infoBytes))
         {
-            return false;
+            return null;
         }
 
         LandBlockInfoEntry info = LandBlockInfoEntry.UnPack(infoBytes.Span);
-        if ((uint)((cellId & 0xFFFFu) - LandDefs.FirstEnvCell) >= (uint)info.NumCells
-            || !_source.TryGetEntry(cellId, out ReadOnlyMemory<byte> cellBytes))
-        {
-            return false;
-        }
-
-        EnvCellEntry cell = EnvCellEntry.UnPack(cellBytes.Span);
-        seenOutside = (cell.Flags & EnvCellEntry.SeenOutsideFlag) != 0;
-        return true;
+        return (uint)((cellId & 0xFFFFu) - LandDefs.FirstEnvCell) >= (uint)info.NumCells ? null : _loader.ReadVisibleCell(cellId);
     }
 }

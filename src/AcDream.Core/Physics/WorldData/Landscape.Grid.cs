@@ -167,7 +167,7 @@ public sealed partial class Landscape
                 bool wasFull = !s.Fetched && s.Block.Loaded is not null;
                 if (s.Size == 1 && !wasFull)
                 {
-                    s.Promote = _loader.Read(s.Block.BlockId, outdoors: true);
+                    s.Promote = _loader.Read(s.Block.BlockId, withEnvCells: false);
                 }
                 else if (s.Size != 1 && wasFull)
                 {

@@ -36,9 +36,6 @@ public sealed partial class Landscape
     // Retail land_blocks, [x * MidWidth + y]; null while there is no grid.
     private LandscapeBlock?[]? _landBlocks;
 
-    // The dungeon block whose indoor cells are held without the landscape (retail: the visible-cell table of the cell).
-    private WorldLoader.LoadedBlock? _interior;
-
     // CellManager's load_pos cell and curr_cell.
     private uint _loadPosCellId;
     private ObjCell? _currCell;
@@ -84,8 +81,27 @@ public sealed partial class Landscape
     /// <summary>True while there is a grid.</summary>
     public bool HasGrid => _landBlocks is not null;
 
-    /// <summary>The dungeon whose indoor cells the world holds without its landscape, or null.</summary>
-    public WorldBlock? Interior => _interior?.Block;
+    /// <summary>The indoor cells the world holds (retail's visible-cell table): the cells the doors of the full-detail blocks'
+    /// buildings see (their stab lists) and, in an indoor cell, that cell and the cells it sees; in the order they came.</summary>
+    public IReadOnlyList<EnvCell> VisibleCells
+    {
+        get
+        {
+            IReadOnlyList<WorldLoader.VisibleCell> table = _loader.VisibleCells;
+            var cells = new EnvCell[table.Count];
+            for (int i = 0; i < cells.Length; i++)
+            {
+                cells[i] = table[i].Cell;
+            }
+
+            return cells;
+        }
+    }
+
+    /// <summary>The static objects of the visible indoor cell <paramref name="cellId"/> (for a renderer), empty when the cell
+    /// is not visible.</summary>
+    public IReadOnlyList<WorldObject> GetCellObjects(uint cellId) =>
+        _loader.GetVisibleCell(cellId)?.Objects ?? (IReadOnlyList<WorldObject>)Array.Empty<WorldObject>();
 
     /// <summary>Sets the grid's radius, while there is no grid (before the first change, or after <see cref="ReleaseAll"/>).</summary>
     /// <returns>False, with nothing changed, when there is a grid.</returns>
@@ -171,8 +187,8 @@ public sealed partial class Landscape
     {
         ThrowIfTicking();
         var released = new List<uint>();
-        ReleaseInterior(released);
         ReleaseGrid(released);
+        _loader.ReleaseVisibleCells(new List<uint>());
         _loadPosCellId = 0;
         _currCell = null;
     }
@@ -212,16 +228,6 @@ public sealed partial class Landscape
             _loader.Release(b.Loaded);
             b.Loaded = null;
             released.Add(b.BlockId);
-        }
-    }
-
-    private void ReleaseInterior(List<uint> released)
-    {
-        if (_interior is not null)
-        {
-            _loader.Release(_interior);
-            released.Add(_interior.Pending.BlockId);
-            _interior = null;
         }
     }
 }

@@ -33,6 +33,7 @@ public sealed class LandscapeChange
     internal static readonly LandscapeChange SameCell = new(LandscapeStatus.SameCell);
     internal static readonly LandscapeChange NoCell = new(LandscapeStatus.NoCell);
     internal static readonly LandscapeChange Moved = new(LandscapeStatus.Updated);
+    internal static readonly LandscapeChange ReleasedAll = new(LandscapeStatus.Released);
 
     private LandscapeChange(LandscapeStatus status)
     {
@@ -41,15 +42,20 @@ public sealed class LandscapeChange
         Left = NoIds;
         Built = NoBlocks;
         Released = NoIds;
+        CellsEntered = NoIds;
+        CellsReleased = NoIds;
     }
 
-    internal LandscapeChange(LandscapeStatus status, uint[] entered, uint[] left, WorldBlock[] built, uint[] released)
+    internal LandscapeChange(LandscapeStatus status, uint[] entered, uint[] left, WorldBlock[] built, uint[] released,
+        uint[] cellsEntered, uint[] cellsReleased)
     {
         Status = status;
         Entered = entered;
         Left = left;
         Built = built;
         Released = released;
+        CellsEntered = cellsEntered;
+        CellsReleased = cellsReleased;
     }
 
     /// <summary>What the call did.</summary>
@@ -61,11 +67,18 @@ public sealed class LandscapeChange
     /// <summary>Landblock ids that left the grid, in the order they were released.</summary>
     public IReadOnlyList<uint> Left { get; }
 
-    /// <summary>The blocks built into the world by this call (a block reaching full detail, or a dungeon's interior), in the
-    /// order they were built: each with the buildings, static objects and scenery made for it.</summary>
+    /// <summary>The blocks built into the world by this call (each reaching full detail), in the order they were built: each
+    /// with the buildings, static objects and scenery made for it.</summary>
     public IReadOnlyList<WorldBlock> Built { get; }
 
-    /// <summary>Landblock ids whose world part was released (the block left full detail, left the grid, or a dungeon's
-    /// interior was left): their objects were destroyed and the objects standing in them went to their lost cells.</summary>
+    /// <summary>Landblock ids whose world part was released (the block left full detail or the grid): their objects were
+    /// destroyed and the objects standing in them went to their lost cells.</summary>
     public IReadOnlyList<uint> Released { get; }
+
+    /// <summary>Indoor cells that became visible (retail's visible-cell table), in the order they came; their static objects:
+    /// <see cref="Landscape.GetCellObjects"/>.</summary>
+    public IReadOnlyList<uint> CellsEntered { get; }
+
+    /// <summary>Indoor cells no longer visible: their static objects destroyed, the objects in them sent to their lost cells.</summary>
+    public IReadOnlyList<uint> CellsReleased { get; }
 }

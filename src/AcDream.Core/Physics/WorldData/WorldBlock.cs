@@ -13,9 +13,8 @@ namespace AcDream.Core.Physics.WorldData;
 public sealed class WorldBlock
 {
     internal WorldBlock(uint blockId, LandBlock landBlock, LandBlockInfoEntry? info, EnvCell[] envCells, List<WorldObject> objects,
-        uint[] missingIds, bool outdoors)
+        uint[] missingIds)
     {
-        Outdoors = outdoors;
         BlockId = blockId;
         LandBlock = landBlock;
         Info = info;
@@ -27,18 +26,14 @@ public sealed class WorldBlock
     /// <summary>The landblock id (0xXXYYFFFF).</summary>
     public uint BlockId { get; }
 
-    /// <summary>The block's terrain: in the world when <see cref="Outdoors"/>.</summary>
+    /// <summary>The terrain now in the world.</summary>
     public LandBlock LandBlock { get; }
-
-    /// <summary>True for a block built with its landscape (terrain, buildings, static objects, scenery and indoor cells);
-    /// false for a dungeon's interior, built by the <see cref="Landscape"/> without its landscape (indoor cells and their
-    /// static objects only), as retail's visible-cell table holds a dungeon.</summary>
-    public bool Outdoors { get; }
 
     /// <summary>The block's info entry (0xXXYYFFFE), or null when it has none.</summary>
     public LandBlockInfoEntry? Info { get; }
 
-    /// <summary>The indoor cells now in the world, in id order.</summary>
+    /// <summary>The indoor cells now in the world, in id order: all of the block's when the <see cref="WorldLoader"/> loaded
+    /// it; none when the <see cref="Landscape"/> did (its visible-cell table holds them, <see cref="Landscape.VisibleCells"/>).</summary>
     public IReadOnlyList<EnvCell> EnvCells { get; }
 
     /// <summary>The buildings, static objects and scenery made for the block, in the order retail makes them.</summary>

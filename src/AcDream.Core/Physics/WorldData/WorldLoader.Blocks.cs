@@ -13,17 +13,14 @@ namespace AcDream.Core.Physics.WorldData;
 // in its cells), and its release (CLandBlock::release_all, notify_change_size, Destroy).
 public sealed partial class WorldLoader
 {
-    /// <summary>The block's terrain (outdoors) and indoor cells go into the world; objects lost in them wait for
+    /// <summary>The block's terrain and indoor cells (when read with it) go into the world; objects lost in them wait for
     /// <see cref="InitDynObjs"/>.</summary>
     // retail: LScape::update_block (acclient.c:307785), the CLandBlockStruct::generate at full detail (lines 308169–308205)
     internal LoadedBlock AddCells(PendingBlock p)
     {
         var b = new LoadedBlock(p);
         _blocks.Add(p.BlockId, b);
-        if (p.Outdoors)
-        {
-            _cells.Terrain.AddLandBlock(p.LandBlock, initObjects: false);
-        }
+        _cells.Terrain.AddLandBlock(p.LandBlock, initObjects: false);
 
         foreach (EnvCell c in p.EnvCells)
         {
@@ -42,7 +39,7 @@ public sealed partial class WorldLoader
         for (int i = 0; i < blocks.Count; i++)
         {
             LoadedBlock b = blocks[i];
-            if (!b.Interior && !b.BuildingsDone)
+            if (!b.BuildingsDone)
             {
                 b.BuildingsDone = true;
                 InitBuildings(b);
@@ -52,11 +49,7 @@ public sealed partial class WorldLoader
         for (int i = 0; i < blocks.Count; i++)
         {
             LoadedBlock b = blocks[i];
-            if (b.Interior)
-            {
-                InitEnvCellStaticsOnce(b);
-            }
-            else if (!b.StaticsDone)
+            if (!b.StaticsDone)
             {
                 b.StaticsDone = true;
                 InitStaticObjs(b);
@@ -69,7 +62,7 @@ public sealed partial class WorldLoader
             }
 
             b.Block ??= new WorldBlock(b.Pending.BlockId, b.Pending.LandBlock, b.Pending.Info, b.Pending.EnvCells, b.Objects,
-                b.Missing.ToArray(), !b.Interior);
+                b.Missing.ToArray());
             InitDynObjs(b);
         }
     }
@@ -92,15 +85,12 @@ public sealed partial class WorldLoader
         }
 
         b.DynObjsInitDone = true;
-        if (!b.Interior)
+        LandBlock land = b.Pending.LandBlock;
+        for (int x = 0; x < LandDefs.BlockSide; x++)
         {
-            LandBlock land = b.Pending.LandBlock;
-            for (int x = 0; x < LandDefs.BlockSide; x++)
+            for (int y = 0; y < LandDefs.BlockSide; y++)
             {
-                for (int y = 0; y < LandDefs.BlockSide; y++)
-                {
-                    land.GetCell(x, y).InitObjects(_world);
-                }
+                land.GetCell(x, y).InitObjects(_world);
             }
         }
 
@@ -115,15 +105,12 @@ public sealed partial class WorldLoader
     // retail: CLandBlock::release_objs (acclient.c:351533); the indoor cells' as CEnvCell::release_visible releases them
     private void ReleaseObjs(LoadedBlock b)
     {
-        if (!b.Interior)
+        LandBlock land = b.Pending.LandBlock;
+        for (int x = 0; x < LandDefs.BlockSide; x++)
         {
-            LandBlock land = b.Pending.LandBlock;
-            for (int x = 0; x < LandDefs.BlockSide; x++)
+            for (int y = 0; y < LandDefs.BlockSide; y++)
             {
-                for (int y = 0; y < LandDefs.BlockSide; y++)
-                {
-                    land.GetCell(x, y).ReleaseObjects(_world);
-                }
+                land.GetCell(x, y).ReleaseObjects(_world);
             }
         }
 
@@ -150,10 +137,7 @@ public sealed partial class WorldLoader
             _cells.RemoveEnvCell(c.CellId);
         }
 
-        if (!b.Interior)
-        {
-            _cells.Terrain.RemoveLandBlock(b.Pending.BlockId);
-        }
+        _cells.Terrain.RemoveLandBlock(b.Pending.BlockId);
     }
 
     /// <summary>The loaded block <paramref name="blockId"/> (0xXXYYFFFF), or null.</summary>

@@ -11,9 +11,9 @@ namespace AcDream.Core.Physics.WorldData;
 // Reading a block's entries before the world changes, and what the door keeps of a block it built.
 public sealed partial class WorldLoader
 {
-    // One block's entries, read and unpacked, with the shape of every object it will make: all of it outdoors, the indoor
-    // cells and their static objects only for an interior load (a dungeon's block, without its landscape).
-    internal PendingBlock Read(uint block, bool outdoors)
+    // One block's entries, read and unpacked, with the shape of every object it will make; its indoor cells too unless the
+    // landscape reads them through its visible-cell table (withEnvCells false).
+    internal PendingBlock Read(uint block, bool withEnvCells)
     {
         LandBlockEntry land = LandBlockEntry.UnPack(Entry(block));
         Expect("CLandBlock", land.Id, block);
@@ -27,7 +27,7 @@ public sealed partial class WorldLoader
             info = LandBlockInfoEntry.UnPack(Entry(infoId));
             Expect("CLandBlockInfo", info.Id, infoId);
             var environments = new Dictionary<uint, EnvironmentEntry>();
-            for (int i = 0; i < info.NumCells; i++)
+            for (int i = 0; withEnvCells && i < info.NumCells; i++)
             {
                 EnvCellEntry cell = EnvCellEntry.UnPack(Entry(info.CellId(i)));
                 Expect("CEnvCell", cell.Id, info.CellId(i), 8);
@@ -43,17 +43,14 @@ public sealed partial class WorldLoader
             }
 
             // Every object's shape, so that a bad Setup or GfxObj throws now (a missing one fails its object later).
-            if (outdoors)
+            foreach (BuildingInfo b in info.Buildings)
             {
-                foreach (BuildingInfo b in info.Buildings)
-                {
-                    Objects.InitPartArrayModel(b.ModelId, out _);
-                }
+                Objects.InitPartArrayModel(b.ModelId, out _);
+            }
 
-                foreach (StaticObjectInfo o in info.Objects)
-                {
-                    Objects.InitPartArrayModel(o.Id, out _);
-                }
+            foreach (StaticObjectInfo o in info.Objects)
+            {
+                Objects.InitPartArrayModel(o.Id, out _);
             }
 
             foreach (EnvCellEntry c in envEntries)
@@ -63,11 +60,6 @@ public sealed partial class WorldLoader
                     Objects.InitPartArrayModel(o.Id, out _);
                 }
             }
-        }
-
-        if (!outdoors)
-        {
-            return new PendingBlock(block, landBlock, info, envCells.ToArray(), envEntries.ToArray(), Array.Empty<SceneryItem>(), false);
         }
 
         IReadOnlyList<SceneryItem> scenery = ScenerySource is not null
@@ -85,7 +77,7 @@ public sealed partial class WorldLoader
             Objects.InitPartArrayModel(s.ObjectId, out _);
         }
 
-        return new PendingBlock(block, landBlock, info, envCells.ToArray(), envEntries.ToArray(), scenery, true);
+        return new PendingBlock(block, landBlock, info, envCells.ToArray(), envEntries.ToArray(), scenery);
     }
 
     // An entry whose own id is not the id it was asked for is not that entry.
@@ -108,16 +100,12 @@ public sealed partial class WorldLoader
     }
 
     internal sealed record PendingBlock(uint BlockId, LandBlock LandBlock, LandBlockInfoEntry? Info, EnvCell[] EnvCells,
-        EnvCellEntry[] EnvEntries, IReadOnlyList<SceneryItem> Scenery, bool Outdoors);
+        EnvCellEntry[] EnvEntries, IReadOnlyList<SceneryItem> Scenery);
 
-    // A block in the world: what retail's CLandBlock holds of it (static_objects, buildings, dyn_objs_init_done), or, for an
-    // interior load, the indoor cells retail's visible-cell table holds.
+    // A block in the world: what retail's CLandBlock holds of it (static_objects, buildings, dyn_objs_init_done).
     internal sealed class LoadedBlock(PendingBlock pending)
     {
         public PendingBlock Pending { get; } = pending;
-
-        /// <summary>True for an interior load: indoor cells and their statics only, no terrain.</summary>
-        public bool Interior => !Pending.Outdoors;
 
         public List<WorldObject> Objects { get; } = new();
 

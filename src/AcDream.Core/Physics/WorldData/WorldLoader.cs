@@ -110,7 +110,7 @@ public sealed partial class WorldLoader
                 throw new ArgumentException($"Landblock 0x{block:X8} is repeated or already loaded.", nameof(blockIds));
             }
 
-            pending[i] = Read(block, outdoors: true);
+            pending[i] = Read(block, withEnvCells: true);
         }
 
         // Now change the world: the terrain and cells of every block, so that shadows reach across block edges; then
@@ -148,7 +148,7 @@ public sealed partial class WorldLoader
 
         ThrowIfLandscape();
         uint block = LandDefs.BlockIdOf(blockId);
-        if (!_blocks.TryGetValue(block, out LoadedBlock? b) || b.Interior)
+        if (!_blocks.TryGetValue(block, out LoadedBlock? b))
         {
             return false;
         }
