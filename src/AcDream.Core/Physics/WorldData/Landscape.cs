@@ -83,20 +83,7 @@ public sealed partial class Landscape
 
     /// <summary>The indoor cells the world holds (retail's visible-cell table): the cells the doors of the full-detail blocks'
     /// buildings see (their stab lists) and, in an indoor cell, that cell and the cells it sees; in the order they came.</summary>
-    public IReadOnlyList<EnvCell> VisibleCells
-    {
-        get
-        {
-            IReadOnlyList<WorldLoader.VisibleCell> table = _loader.VisibleCells;
-            var cells = new EnvCell[table.Count];
-            for (int i = 0; i < cells.Length; i++)
-            {
-                cells[i] = table[i].Cell;
-            }
-
-            return cells;
-        }
-    }
+    public IReadOnlyList<EnvCell> VisibleCells => _loader.VisibleEnvCells;
 
     /// <summary>The static objects of the visible indoor cell <paramref name="cellId"/> (for a renderer), empty when the cell
     /// is not visible.</summary>

@@ -14,6 +14,10 @@ public sealed partial class WorldLoader
 {
     private readonly List<VisibleCell> _visible = new();
     private readonly Dictionary<uint, VisibleCell> _visibleById = new();
+    private readonly List<EnvCell> _visibleEnvCells = new();
+
+    /// <summary>The visible indoor cells' <see cref="EnvCell"/>s, in the table's order (a view kept with it).</summary>
+    internal IReadOnlyList<EnvCell> VisibleEnvCells => _visibleEnvCells;
 
     /// <summary>The visible indoor cells, in the order they were added.</summary>
     internal IReadOnlyList<VisibleCell> VisibleCells => _visible;
@@ -88,6 +92,7 @@ public sealed partial class WorldLoader
         }
 
         _visible.RemoveAll(c => !_visibleById.ContainsKey(c.Cell.CellId));
+        _visibleEnvCells.RemoveAll(c => !_visibleById.ContainsKey(c.CellId));
         foreach (uint id in ids)
         {
             if (_visibleById.ContainsKey(id) || !read.TryGetValue(id, out VisibleCell? c) || c is null)
@@ -96,6 +101,7 @@ public sealed partial class WorldLoader
             }
 
             _visible.Add(c);
+            _visibleEnvCells.Add(c.Cell);
             _visibleById.Add(id, c);
             _cells.AddEnvCell(c.Cell, initObjects: false);
             entered.Add(id);
