@@ -45,4 +45,30 @@ public class LandscapeAllocationTests
         Assert.Equal(0, otherStatus);
         Assert.Equal(Cell(0x80, 0x80, 100f, 100f), walker.CellId);
     }
+
+    [Fact]
+    public void ACellChangeInsideAFullGrid_AllocatesNothing()
+    {
+        // Radius 1: the grid is the 3 x 3 and full, so a cell change moves no block; the second pass (adjust_scene_obj_height,
+        // the statics' shadows) and the visible-cell table run on scratch the landscape keeps.
+        Landscape l = Landscape(Source(), out _, out _, radius: 1);
+        Position a = At(0x80, 0x80, 100f, 84f), b = At(0x80, 0x80, 100f, 100f);
+        l.ChangePosition(a);
+        for (int i = 0; i < 4; i++)
+        {
+            l.ChangePosition(b);
+            l.ChangePosition(a);
+        }
+
+        int other = 0;
+        AllocationProbe.AssertSteadyStateAllocatesNothing(() =>
+        {
+            for (int i = 0; i < 5; i++)
+            {
+                other += l.ChangePosition(b) == LandscapeChange.Moved ? 0 : 1;
+                other += l.ChangePosition(a) == LandscapeChange.Moved ? 0 : 1;
+            }
+        });
+        Assert.Equal(0, other);
+    }
 }

@@ -1,4 +1,5 @@
 using AcDream.Core.Physics.WorldData;
+using AcDream.Core.Tests.Support;
 using Xunit;
 
 namespace AcDream.Core.Tests.Retail;
@@ -9,6 +10,15 @@ namespace AcDream.Core.Tests.Retail;
 /// </summary>
 public class LandscapeGridTests
 {
+    [Fact]
+    public void TheDefaultMidRadius_IsTheLScapeConstructors()
+    {
+        // LScape::LScape (acclient.c:306925): mid_radius = 5, mid_width = 11.
+        Assert.Equal(5, Landscape.DefaultMidRadius);
+        Landscape l = LandscapeEntries.Landscape(LandscapeEntries.Source(), out _, out _, radius: Landscape.DefaultMidRadius);
+        Assert.Equal(11, l.MidWidth);
+    }
+
     [Theory]
     // (0xA9B4, 0xAAB4): x (cell_id >> 21) & 0x7F8 = 0xA9 * 8 -> 0xAA * 8, one block east.
     [InlineData(0xA9B4001Cu, 0xAAB40001u, 1, 0)]

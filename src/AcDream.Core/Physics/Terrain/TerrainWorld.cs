@@ -70,7 +70,7 @@ public sealed partial class TerrainWorld : ICellSource
         OwnerWorld?.RehomeObjectsIn(BlockPrefix(block.BlockX, block.BlockY), 0xFFFF0000u);
         if (initObjects)
         {
-            OwnerWorld?.InitLandBlockObjCells(BlockPrefix(block.BlockX, block.BlockY));
+            OwnerWorld?.InitLandBlockObjCells(block);
         }
     }
 

@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Cells;
 using AcDream.Core.Physics.Collision.Sweep;
 using AcDream.Core.Physics.Objects;
 using AcDream.Core.Physics.Spatial;
+using AcDream.Core.Physics.Terrain;
 
 namespace AcDream.Core.Physics.World;
 
@@ -188,21 +189,16 @@ public sealed partial class PhysicsWorld
     // Retail's static DArray of ReleaseObjCell, kept by the world.
     private readonly List<PhysicsObj> _releaseScratch = new();
 
-    /// <summary>Every outdoor cell of landblock <paramref name="blockPrefix"/> (<c>0xXXYY0000</c>) was loaded: the lost cells
-    /// of its 64 land cells, in retail's order (<c>CLandBlock::init_dyn_objs</c>: x, then y).</summary>
-    // retail: CLandBlock::init_dyn_objs (acclient.c:351558) -> CObjCell::init_objects (acclient.c:346914), the lost-cell half
-    internal void InitLandBlockObjCells(uint blockPrefix)
+    /// <summary>Every outdoor cell of <paramref name="block"/> was loaded: each cell's objects are initialised (the objects
+    /// lost in it come back, the incomplete ones are shadowed again), in retail's order (x, then y).</summary>
+    // retail: CLandBlock::init_dyn_objs (acclient.c:351558) -> CObjCell::init_objects (acclient.c:346914) per land cell
+    internal void InitLandBlockObjCells(LandBlock block)
     {
-        if (_lostObjectCount == 0)
-        {
-            return;
-        }
-
         for (int x = 0; x < LandDefs.BlockSide; x++)
         {
             for (int y = 0; y < LandDefs.BlockSide; y++)
             {
-                InitObjCell(blockPrefix | (uint)(x * LandDefs.BlockSide + y + 1));
+                block.GetCell(x, y).InitObjects(this);
             }
         }
     }

@@ -133,7 +133,8 @@ public sealed partial class Landscape
             AddStabLists(visible, plan, grid);
         }
 
-        var read = new Dictionary<uint, WorldLoader.VisibleCell?>();
+        Dictionary<uint, WorldLoader.VisibleCell?> read = _readScratch;
+        read.Clear();
         if (indoor is not null && _loader.GetVisibleCell(cellId) is null)
         {
             read[cellId] = indoor;
@@ -170,9 +171,11 @@ public sealed partial class Landscape
             LoadedCellId = loadPoint;
         }
 
-        var cellsReleased = new List<uint>();
-        var cellsEntered = new List<uint>();
+        List<uint> cellsReleased = _cellsReleasedScratch, cellsEntered = _cellsEnteredScratch;
+        cellsReleased.Clear();
+        cellsEntered.Clear();
         _loader.SetVisibleCells(visible, read, cellsReleased, cellsEntered);
+        read.Clear();
         List<WorldLoader.LoadedBlock> grab = _grabScratch;
         grab.Clear();
         if (grabLandscape && _landBlocks is not null)
@@ -262,6 +265,9 @@ public sealed partial class Landscape
     }
 
     private readonly List<uint> _visibleScratch = new();
+    private readonly List<uint> _cellsReleasedScratch = new();
+    private readonly List<uint> _cellsEnteredScratch = new();
+    private readonly Dictionary<uint, WorldLoader.VisibleCell?> _readScratch = new();
     private readonly List<uint> _releasedScratch = new();
     private readonly List<WorldLoader.LoadedBlock> _builtScratch = new();
     private readonly List<WorldLoader.LoadedBlock> _grabScratch = new();

@@ -196,10 +196,7 @@ public sealed partial class Landscape
         }
 
         LandBlockEntry entry = LandBlockEntry.UnPack(bytes.Span);
-        if (entry.Id != id)
-        {
-            throw new Format.RetailDataFormatException("CLandBlock", 0, $"the entry asked for as 0x{id:X8} holds 0x{entry.Id:X8}");
-        }
+        WorldLoader.Expect("CLandBlock", entry.Id, id);
 
         return new LandscapeBlock(id, entry);
     }

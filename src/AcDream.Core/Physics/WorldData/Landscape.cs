@@ -27,6 +27,7 @@ public sealed partial class Landscape
     public const int DefaultMidRadius = 5;
 
     /// <summary>The largest mid radius accepted (a grid of 129 × 129 blocks).</summary>
+    // non-retail: retail's SetMidRadius has no upper bound; 64 keeps the grid a reasonable size (docs/divergences.md)
     public const int MaxMidRadius = 64;
 
     private readonly WorldLoader _loader;

@@ -85,14 +85,7 @@ public sealed partial class WorldLoader
         }
 
         b.DynObjsInitDone = true;
-        LandBlock land = b.Pending.LandBlock;
-        for (int x = 0; x < LandDefs.BlockSide; x++)
-        {
-            for (int y = 0; y < LandDefs.BlockSide; y++)
-            {
-                land.GetCell(x, y).InitObjects(_world);
-            }
-        }
+        _world.InitLandBlockObjCells(b.Pending.LandBlock);
 
         foreach (EnvCell c in b.Pending.EnvCells)
         {
@@ -139,9 +132,6 @@ public sealed partial class WorldLoader
 
         _cells.Terrain.RemoveLandBlock(b.Pending.BlockId);
     }
-
-    /// <summary>The loaded block <paramref name="blockId"/> (0xXXYYFFFF), or null.</summary>
-    internal LoadedBlock? GetLoaded(uint blockId) => _blocks.TryGetValue(blockId, out LoadedBlock? b) ? b : null;
 
     /// <summary>Each scenery object (the statics after the landblock info's) set on the terrain under it again when it
     /// stands more than 0.0002 m off it.</summary>

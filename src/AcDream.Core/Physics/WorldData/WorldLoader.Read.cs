@@ -81,7 +81,7 @@ public sealed partial class WorldLoader
     }
 
     // An entry whose own id is not the id it was asked for is not that entry.
-    private static void Expect(string structure, uint got, uint asked, int offset = 0)
+    internal static void Expect(string structure, uint got, uint asked, int offset = 0)
     {
         if (got != asked)
         {

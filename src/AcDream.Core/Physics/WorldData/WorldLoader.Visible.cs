@@ -67,12 +67,18 @@ public sealed partial class WorldLoader
     // (acclient.c:349823): a released cell named again is taken back without a reload; the rest go at flush_cells
     internal void SetVisibleCells(IReadOnlyList<uint> ids, Dictionary<uint, VisibleCell?> read, List<uint> released, List<uint> entered)
     {
-        var named = new HashSet<uint>(ids);
+        // The table is compacted in place (its order kept): no set or delegate is made, so a change that keeps the table
+        // allocates nothing.
+        int kept = 0;
         for (int i = 0; i < _visible.Count; i++)
         {
             VisibleCell c = _visible[i];
-            if (named.Contains(c.Cell.CellId))
+            uint id = c.Cell.CellId;
+            if (Names(ids, id))
             {
+                _visible[kept] = c;
+                _visibleEnvCells[kept] = c.Cell;
+                kept++;
                 continue;
             }
 
@@ -86,15 +92,16 @@ public sealed partial class WorldLoader
                 }
             }
 
-            _cells.RemoveEnvCell(c.Cell.CellId);
-            _visibleById.Remove(c.Cell.CellId);
-            released.Add(c.Cell.CellId);
+            _cells.RemoveEnvCell(id);
+            _visibleById.Remove(id);
+            released.Add(id);
         }
 
-        _visible.RemoveAll(c => !_visibleById.ContainsKey(c.Cell.CellId));
-        _visibleEnvCells.RemoveAll(c => !_visibleById.ContainsKey(c.CellId));
-        foreach (uint id in ids)
+        _visible.RemoveRange(kept, _visible.Count - kept);
+        _visibleEnvCells.RemoveRange(kept, _visibleEnvCells.Count - kept);
+        for (int i = 0; i < ids.Count; i++)
         {
+            uint id = ids[i];
             if (_visibleById.ContainsKey(id) || !read.TryGetValue(id, out VisibleCell? c) || c is null)
             {
                 continue;
@@ -106,6 +113,19 @@ public sealed partial class WorldLoader
             _cells.AddEnvCell(c.Cell, initObjects: false);
             entered.Add(id);
         }
+    }
+
+    private static bool Names(IReadOnlyList<uint> ids, uint id)
+    {
+        for (int i = 0; i < ids.Count; i++)
+        {
+            if (ids[i] == id)
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     /// <summary>Every visible cell: its static objects made the first time, then the objects lost in it brought back.</summary>
@@ -152,7 +172,7 @@ public sealed partial class WorldLoader
 
     /// <summary>Releases every visible cell.</summary>
     internal void ReleaseVisibleCells(List<uint> released) =>
-        SetVisibleCells(Array.Empty<uint>(), new Dictionary<uint, VisibleCell?>(), released, new List<uint>());
+        SetVisibleCells(Array.Empty<uint>(), new Dictionary<uint, VisibleCell?>(), released, released);
 
     /// <summary>One visible indoor cell: the cell, its entry, and its static objects once made.</summary>
     internal sealed class VisibleCell(EnvCell cell, EnvCellEntry entry)
