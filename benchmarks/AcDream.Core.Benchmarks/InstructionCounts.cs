@@ -26,6 +26,8 @@ internal static class InstructionCounts
         ["rotate"] = () => Frame(b => b.RotateOnce()),
         ["roundtrip"] = () => Frame(b => b.LocalToGlobalRoundTripOnce()),
         ["setheading"] = () => Frame(b => b.SetHeadingOnce()),
+        ["grotate-chain"] = () => Frame(b => b.GRotate()),
+        ["floor-grotate-chain"] = () => Floor(b => b.GRotate()),
         ["floor-combine"] = () => Floor(b => b.CombineOnce()),
         ["floor-grotate"] = () => Floor(b => b.GRotateOnce()),
         ["floor-rotate"] = () => Floor(b => b.RotateOnce()),
@@ -33,6 +35,8 @@ internal static class InstructionCounts
         ["floor-setheading"] = () => Floor(b => b.SetHeadingOnce()),
         ["world-1000"] = () => World(1000),
         ["world-10000"] = () => World(10000),
+        ["resting-1000"] = () => Resting(1000),
+        ["resting-10000"] = () => Resting(10000),
         ["crowd-100"] = () => { var c = new HoltburgCrowd(100); return () => c.TickOnce(); },
         ["crowd-1000"] = () => { var c = new HoltburgCrowd(1000); return () => c.TickOnce(); },
     };
@@ -68,6 +72,13 @@ internal static class InstructionCounts
         var b = new FrameBenchmarks();
         b.Setup();
         return () => op(b);
+    }
+
+    private static Action Resting(int n)
+    {
+        var b = new RestingWorldTickBenchmarks { N = n };
+        b.Setup();
+        return () => b.TickOnce();
     }
 
     private static Action Floor(Action<FrameFloorBenchmarks> op)

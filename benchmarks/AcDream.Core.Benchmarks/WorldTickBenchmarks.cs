@@ -5,7 +5,9 @@ using BenchmarkDotNet.Attributes;
 namespace AcDream.Core.Benchmarks;
 
 /// <summary>
-/// The whole world tick (<c>CPhysics::UseTime</c>) with N moving objects, each updated once per tick (one step).
+/// The whole world tick (<c>CPhysics::UseTime</c>) with N moving objects, each updated once per tick (one step): one
+/// sphere, 1 m/s and 0.5 rad/s, no gravity, so none is ever at rest (docs/performance.md called these rows "resting
+/// objects" until #38; <see cref="RestingWorldTickBenchmarks"/> is the world of objects really at rest).
 /// Each invoke runs <see cref="Ticks"/> ticks; the mean is per world tick.
 /// </summary>
 [MemoryDiagnoser]

@@ -11,9 +11,11 @@ namespace AcDream.Core.Benchmarks.Floors;
 /// (set_rotate's <c>IsValid</c> and restore, which a valid input never takes), no early exits, no copies through
 /// <c>in</c>/<c>out</c> parameters, every step inlined into one body over locals. On valid input it gives the library's bits,
 /// which <see cref="FrameFloorBenchmarks"/> checks at setup; the gap between a library row and its floor is what is not
-/// arithmetic.
+/// arithmetic. Its rows return the whole frame, as the library's return the whole <c>Frame</c>: a row that returned one
+/// component let the JIT drop the rotation matrix of grotate and set_heading (nothing read it), which made those floors
+/// 26–35 ns faster than the arithmetic the library must do (docs/performance.md, "#38: the floor that dropped the matrix").
 /// </summary>
-internal struct FloorFrame
+public struct FloorFrame
 {
     public float Qw, Qx, Qy, Qz;
     public float M11, M12, M13, M21, M22, M23, M31, M32, M33;

@@ -44,7 +44,7 @@ public class FrameFloorBenchmarks
 
     /// <summary>combine on its floor.</summary>
     [Benchmark(OperationsPerInvoke = Ops)]
-    public float Combine()
+    public FloorFrame Combine()
     {
         FloorFrame r = _a;
         for (int i = 0; i < Ops; i++)
@@ -52,12 +52,12 @@ public class FrameFloorBenchmarks
             r.CombineWith(_b);
         }
 
-        return r.Qw + r.Ox;
+        return r;
     }
 
     /// <summary>grotate on its floor.</summary>
     [Benchmark(OperationsPerInvoke = Ops)]
-    public float GRotate()
+    public FloorFrame GRotate()
     {
         FloorFrame r = _a;
         for (int i = 0; i < Ops; i++)
@@ -65,12 +65,12 @@ public class FrameFloorBenchmarks
             r.GRotate(_w);
         }
 
-        return r.Qw;
+        return r;
     }
 
     /// <summary>grotate by a pure yaw on its floor.</summary>
     [Benchmark(OperationsPerInvoke = Ops)]
-    public float GRotateYaw()
+    public FloorFrame GRotateYaw()
     {
         FloorFrame r = _a;
         for (int i = 0; i < Ops; i++)
@@ -78,12 +78,12 @@ public class FrameFloorBenchmarks
             r.GRotate(_yaw);
         }
 
-        return r.Qw;
+        return r;
     }
 
     /// <summary>rotate on its floor.</summary>
     [Benchmark(OperationsPerInvoke = Ops)]
-    public float Rotate()
+    public FloorFrame Rotate()
     {
         FloorFrame r = _a;
         for (int i = 0; i < Ops; i++)
@@ -91,7 +91,7 @@ public class FrameFloorBenchmarks
             r.Rotate(_w);
         }
 
-        return r.Qw;
+        return r;
     }
 
     /// <summary>localtoglobal then globaltolocal on their floor.</summary>
@@ -110,7 +110,7 @@ public class FrameFloorBenchmarks
 
     /// <summary>set_heading on its floor.</summary>
     [Benchmark(OperationsPerInvoke = Ops)]
-    public float SetHeading()
+    public FloorFrame SetHeading()
     {
         FloorFrame r = _a;
         for (int i = 0; i < Ops; i++)
@@ -118,7 +118,7 @@ public class FrameFloorBenchmarks
             r.SetHeading(i * 0.36f);
         }
 
-        return r.Qw;
+        return r;
     }
 
     // One operation of each row, continuing one chain (InstructionCounts).
