@@ -14,6 +14,7 @@ public sealed class AnimClip
 {
     private readonly AFrame[]? _posFrames;
     private readonly AnimFrame[] _partFrames;
+    private readonly Frame[]? _posFromIdentity;
 
     // retail: CAnimation::CAnimation (acclient.c:333676)
     internal AnimClip(uint id, int numParts, AFrame[]? posFrames, AnimFrame[] partFrames, bool hasHooks)
@@ -23,6 +24,7 @@ public sealed class AnimClip
         _posFrames = posFrames;
         _partFrames = partFrames;
         HasHooks = hasHooks;
+        _posFromIdentity = CombineFromIdentity(posFrames);
     }
 
     /// <summary>The animation's data id (the entry's first word, retail <c>m_DID</c>).</summary>
@@ -49,6 +51,41 @@ public sealed class AnimClip
     internal AFrame[]? PosFramesArray => _posFrames;
 
     internal AnimFrame[] PartFramesArray => _partFrames;
+
+    /// <summary>
+    /// For each root-motion frame, <see cref="Frame.Identity"/> combined with it (CSequence's <c>Frame::combine</c>,
+    /// <see cref="AFrame.Combine"/>): what the first frame an update crosses gives, since every update starts from an
+    /// identity offset frame (<c>CPhysicsObj::UpdatePositionInternal</c>). Null when there are no root-motion frames or one
+    /// is not finite (a NaN's payload is not promised to come out of the arithmetic the same way twice).
+    /// </summary>
+    internal Frame[]? PosFromIdentityArray => _posFromIdentity;
+
+    // non-retail (#38): the combine of an identity frame with each root-motion frame, worked out once by the same code that
+    // would work it out on every update, so the shortcut is bit-identical by construction.
+    private static Frame[]? CombineFromIdentity(AFrame[]? posFrames)
+    {
+        if (posFrames is null || posFrames.Length == 0)
+        {
+            return null;
+        }
+
+        var combined = new Frame[posFrames.Length];
+        for (int i = 0; i < posFrames.Length; i++)
+        {
+            AFrame p = posFrames[i];
+            if (!float.IsFinite(p.Origin.X) || !float.IsFinite(p.Origin.Y) || !float.IsFinite(p.Origin.Z) || !float.IsFinite(p.Qw)
+                || !float.IsFinite(p.Qx) || !float.IsFinite(p.Qy) || !float.IsFinite(p.Qz))
+            {
+                return null;
+            }
+
+            Frame f = Frame.Identity;
+            AFrame.Combine(ref f, p);
+            combined[i] = f;
+        }
+
+        return combined;
+    }
 
     /// <summary>
     /// Reads an animation from a data-file entry's bytes (after the dat container): the entry's data id, then retail

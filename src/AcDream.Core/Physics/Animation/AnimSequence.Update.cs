@@ -84,10 +84,7 @@ public sealed partial class AnimSequence
                 {
                     if (hasFrame)
                     {
-                        if (curr.TryGetPosFrame(lastFrame, out AFrame pos))
-                        {
-                            AFrame.Combine(ref retval, pos);
-                        }
+                        curr.CombinePosFrame(lastFrame, ref retval);
 
                         if (Math.Abs(framerate) > Epsilon)
                         {

@@ -142,6 +142,31 @@ internal sealed class AnimSequenceNode
         return false;
     }
 
+    /// <summary>
+    /// Combines frame <paramref name="fn"/>'s root motion into <paramref name="retval"/> (CSequence's <c>Frame::combine</c>
+    /// of <c>get_pos_frame</c>), nothing when there is none. An identity <paramref name="retval"/> (every update's first
+    /// frame crossed) takes the combine worked out when the animation was read.
+    /// </summary>
+    // non-retail (#38): the shortcut of AnimClip.PosFromIdentityArray, bit-identical to AFrame.Combine
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    internal void CombinePosFrame(int fn, ref Frame retval)
+    {
+        AnimClip? anim = Anim;
+        AFrame[]? pos = anim?.PosFramesArray;
+        if (anim is not null && pos is not null && fn >= 0 && fn < anim.NumFrames)
+        {
+            Frame[]? fromIdentity = anim.PosFromIdentityArray;
+            if (fromIdentity is not null && retval.HasIdentityBits())
+            {
+                retval = fromIdentity[fn];
+            }
+            else
+            {
+                AFrame.Combine(ref retval, pos[fn]);
+            }
+        }
+    }
+
     /// <summary>get_pos_frame at a fractional frame number: its floor.</summary>
     // retail: AnimSequenceNode::get_pos_frame (acclient.c:339640)
     internal bool TryGetPosFrame(double frameNumber, out AFrame frame) => TryGetPosFrame(FloorToFrame(frameNumber), out frame);
