@@ -73,8 +73,7 @@ public sealed class AnimClip
         for (int i = 0; i < posFrames.Length; i++)
         {
             AFrame p = posFrames[i];
-            if (!float.IsFinite(p.Origin.X) || !float.IsFinite(p.Origin.Y) || !float.IsFinite(p.Origin.Z) || !float.IsFinite(p.Qw)
-                || !float.IsFinite(p.Qx) || !float.IsFinite(p.Qy) || !float.IsFinite(p.Qz))
+            if (!VectorMath.IsFinite(p.Origin) || !VectorMath.IsFinite(p.Rotation))
             {
                 return null;
             }
