@@ -8,6 +8,7 @@ namespace AcDream.Core.Benchmarks;
 /// <c>--quick</c>: a short CI run that writes nothing); <c>replay</c> writes the interpolation replay figures into
 /// artifacts/replay/ (<c>--update-docs</c>: docs/interpolation-replay.md and .svg); <c>scene-ab</c> compares a
 /// world tick with and without 100,000 resting objects in one process (see <see cref="Report.SceneAbReport"/>);
+/// <c>crowd-ab</c> the crowd density ratio (1,000 walkers ÷ 100) in one process (see <see cref="Report.CrowdAbReport"/>);
 /// <c>world-map</c> draws the top-down picture of what collides around Holtburg (see <see cref="Report.HoltburgMap"/>);
 /// <c>landscape-memory</c> prints the memory a streamed 3 × 3 holds (see <see cref="LandscapeMemory"/>);
 /// <c>count ROW N</c> runs one row N times for instruction counts (see <see cref="InstructionCounts"/>);
@@ -36,6 +37,11 @@ public static class Program
         if (args.Length > 0 && string.Equals(args[0], "scene-ab", StringComparison.OrdinalIgnoreCase))
         {
             return Report.SceneAbReport.Run(args.AsSpan(1));
+        }
+
+        if (args.Length > 0 && string.Equals(args[0], "crowd-ab", StringComparison.OrdinalIgnoreCase))
+        {
+            return Report.CrowdAbReport.Run(args.AsSpan(1));
         }
 
         if (args.Length > 0 && string.Equals(args[0], "world-map", StringComparison.OrdinalIgnoreCase))

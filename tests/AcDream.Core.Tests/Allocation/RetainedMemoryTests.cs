@@ -21,7 +21,7 @@ public sealed class WholeHeapCollection
 public class RetainedMemoryTests
 {
     [Fact]
-    public void WalkerWithOneSphere_RetainsAtMost1120Bytes()
+    public void WalkerWithOneSphere_RetainsAtMost1180Bytes()
     {
         // 2,025 creature walkers (one sphere, a movement manager, a creature weenie) on a 45 x 45 grid 4.2 m apart over one
         // flat landblock, placed and ticked 5 times: everything they keep (object, part array, movement manager, shadows, their
@@ -30,10 +30,13 @@ public class RetainedMemoryTests
         // against a bound of 1 KB. Issue #24's render poses add 56 B to every object (the previous pose, compact: cell 4 B,
         // origin 12 B, quaternion 16 B; its time and the current pose's, 16 B; a flag, padded): about 1,056 B measured. Issue
         // #36's lost cells chain their objects through the object (8 B, so that losing and finding objects allocates nothing
-        // in a tick): 1,103 B measured. The bound is 1,120 B.
+        // in a tick): 1,103 B measured. Issue #38's obstacle tables keep 16 B per slot of every cell's shadow list (origin 12 B,
+        // reach 4 B), which the cells of this crowd grow for it (about 40 slots a cell, 1.3 per walker): over 8 runs each,
+        // 1,092-1,132 B before (median 1,101) and 1,111-1,174 B after (median 1,130); the heap measure spreads about 40 B
+        // between runs of the same code. The bound is 1,180 B.
         Measure(200); // warm-up: code, statics and pools first reached
         double perWalker = Measure(2025);
-        Assert.True(perWalker <= 1120.0, $"{perWalker:F1} B per walker");
+        Assert.True(perWalker <= 1180.0, $"{perWalker:F1} B per walker");
     }
 
     private static double Measure(int n)

@@ -1,6 +1,9 @@
 using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Collision;
 using AcDream.Core.Physics.Objects;
+using AcDream.Core.Physics.Spatial;
 
 namespace AcDream.Core.Physics.Cells;
 
@@ -9,6 +12,10 @@ public abstract partial class ObjCell
 {
     // Allocated with the cell (one growth step), so that the first objects to walk in do not allocate inside a tick.
     private ShadowObj[] _shadowObjects = new ShadowObj[ShadowListGrowth];
+
+    // The summary of each listed shadow's object, at the shadow's index (room for the list's capacity).
+    // non-retail: the packed copies from which the object loop passes over obstacles out of reach (ObstacleSummary)
+    private ObstacleTable _obstacles = new(ShadowListGrowth);
 
     /// <summary>Growth step of the shadow list. Retail grows by 5 (<c>add_shadow_object</c>, acclient.c:346804).</summary>
     internal const int ShadowListGrowth = 5;
@@ -41,6 +48,7 @@ public abstract partial class ObjCell
         if (capacity > _shadowObjects.Length)
         {
             Array.Resize(ref _shadowObjects, capacity);
+            _obstacles.EnsureCapacity(capacity);
         }
     }
 
@@ -53,13 +61,26 @@ public abstract partial class ObjCell
     internal void AddShadowObject(ShadowObj shadow)
     {
         ArgumentNullException.ThrowIfNull(shadow);
+        AddShadowObject(shadow, shadow.PhysObj.ComputeObstacleSummary());
+    }
+
+    /// <summary><see cref="AddShadowObject(ShadowObj)"/> with the summary of the shadow's object, computed by the caller
+    /// (<see cref="PhysicsObj.ComputeObstacleSummary"/>: once for all the object's shadows).</summary>
+    // retail: CObjCell::add_shadow_object (acclient.c:346804)
+    internal void AddShadowObject(ShadowObj shadow, in ObstacleSummary summary)
+    {
         if (NumShadowObjects >= _shadowObjects.Length)
         {
             // non-retail: doubling capacity (retail: + 5); unobservable but in allocations
-            Array.Resize(ref _shadowObjects, Math.Max(_shadowObjects.Length * 2, ShadowListGrowth));
+            int capacity = Math.Max(_shadowObjects.Length * 2, ShadowListGrowth);
+            Array.Resize(ref _shadowObjects, capacity);
+            _obstacles.EnsureCapacity(capacity);
         }
 
-        _shadowObjects[NumShadowObjects++] = shadow;
+        int i = NumShadowObjects++;
+        _shadowObjects[i] = shadow;
+        _obstacles.Set(i, summary, Id >> 16);
+        shadow.Slot = i;
         shadow.Cell = this;
     }
 
@@ -68,17 +89,64 @@ public abstract partial class ObjCell
     internal void RemoveShadowObject(ShadowObj shadow)
     {
         ArgumentNullException.ThrowIfNull(shadow);
+        int i = IndexOfShadow(shadow);
+        if (i < 0)
+        {
+            return;
+        }
+
+        shadow.Cell = null;
+        int last = --NumShadowObjects;
+        ShadowObj moved = _shadowObjects[last];
+        _shadowObjects[i] = moved;
+        _obstacles.Move(last, i);
+        moved.Slot = i;
+        _shadowObjects[last] = null!;
+    }
+
+    /// <summary>True when the entry of the shadow at <paramref name="index"/> (0 ..&lt; <see cref="NumShadowObjects"/>) is
+    /// what this cell stores for <paramref name="summary"/>, bit for bit (<see cref="ObstacleSummary.ReachIn"/>).</summary>
+    internal bool HoldsObstacleSummary(int index, in ObstacleSummary summary)
+    {
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual((uint)index, (uint)NumShadowObjects, nameof(index));
+        return _obstacles.Holds(index, summary, Id >> 16);
+    }
+
+    /// <summary>Writes <paramref name="summary"/> as the summary of <paramref name="shadow"/>, listed in this cell.</summary>
+    // non-retail: keeps ObstacleSummary in step with its object
+    internal void SetObstacleSummary(ShadowObj shadow, in ObstacleSummary summary)
+    {
+        int i = IndexOfShadow(shadow);
+        if (i >= 0)
+        {
+            _obstacles.Set(i, summary, Id >> 16);
+        }
+    }
+
+    // The shadow's index in the list (its slot; the list is searched, as retail does, should the slot not name it), or -1.
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private int IndexOfShadow(ShadowObj shadow)
+    {
+        int i = shadow.Slot;
+        if ((uint)i < (uint)NumShadowObjects && ReferenceEquals(_shadowObjects[i], shadow))
+        {
+            return i;
+        }
+
+        return IndexOfShadowBySearch(shadow);
+    }
+
+    private int IndexOfShadowBySearch(ShadowObj shadow)
+    {
         for (int i = 0; i < NumShadowObjects; i++)
         {
             if (ReferenceEquals(_shadowObjects[i], shadow))
             {
-                shadow.Cell = null;
-                NumShadowObjects--;
-                _shadowObjects[i] = _shadowObjects[NumShadowObjects];
-                _shadowObjects[NumShadowObjects] = null!;
-                return;
+                return i;
             }
         }
+
+        return -1;
     }
 
     /// <summary>
@@ -89,46 +157,24 @@ public abstract partial class ObjCell
     private protected TransitionState FindShadowObjCollisions(Transition transition)
     {
         ArgumentNullException.ThrowIfNull(transition);
-        TransitionState result = TransitionState.Ok;
         if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
         {
-            return result;
+            return TransitionState.Ok;
         }
 
+        return transition.ReferencePaths ? FindShadowObjCollisionsRetail(transition) : FindShadowObjCollisionsSkipping(transition);
+    }
+
+    // retail: CObjCell::find_obj_collisions (acclient.c:347141), the loop as retail runs it (RetailSweep.ReferencePaths)
+    private TransitionState FindShadowObjCollisionsRetail(Transition transition)
+    {
+        TransitionState result = TransitionState.Ok;
         PhysicsObj? mover = transition.ObjectInfo.Object;
-        bool skipFar = !transition.ReferencePaths;
-        bool reachValid = false;
-        ObjectReach reach = default;
         for (int i = 0; i < NumShadowObjects; i++)
         {
             PhysicsObj obj = _shadowObjects[i].PhysObj;
             if (obj.Parent is null && !ReferenceEquals(obj, mover))
             {
-                if (skipFar)
-                {
-                    // non-retail: an obstacle whose spheres cannot reach the check spheres is skipped with the exact
-                    // effect of testing it (ObjectReach); the box is rebuilt after every obstacle really tested, since a
-                    // test that answers OK may still have moved the check position (a step up).
-                    if (!reachValid)
-                    {
-                        reach = new ObjectReach(transition.SpherePath);
-                        reachValid = true;
-                    }
-
-                    if (obj.IsOutOfReach(reach))
-                    {
-                        // Skipping can only clear the obstruction flag: nothing to do when it is clear.
-                        if (transition.SpherePath.ObstructionEthereal)
-                        {
-                            obj.SkipOutOfReach(transition);
-                        }
-
-                        continue;
-                    }
-
-                    reachValid = false;
-                }
-
                 result = obj.FindObjCollisions(transition);
                 if (result != TransitionState.Ok)
                 {
@@ -138,6 +184,135 @@ public abstract partial class ObjCell
         }
 
         return result;
+    }
+
+    // non-retail: CObjCell::find_obj_collisions (acclient.c:347141) with the exact early-out of ObjectReach: an obstacle whose
+    // spheres cannot reach the check spheres is skipped with the exact effect of testing it. While the obstruction flag is
+    // clear (skipping then has no effect at all) the table's vector test passes over, four at a time, the obstacles its
+    // summaries show out of reach (their stored reach is never short of the exact one, so the exact test agrees) and the
+    // attached ones, without reading them; every other entry is decided from its object in order, as the reference loop
+    // does. The box is rebuilt after every obstacle really tested, since a test that answers OK may still have moved the
+    // check position (a step up), and the rest of the group is decided again against it.
+    private TransitionState FindShadowObjCollisionsSkipping(Transition transition)
+    {
+        SpherePath path = transition.SpherePath;
+        var reach = new ObjectReach(path);
+        uint block = Id >> 16;
+        int i = 0;
+        while (true)
+        {
+            // The next group with entries to decide one by one (from i on): those the vector test keeps, or all of them
+            // while the obstruction flag is set.
+            int group;
+            uint kept;
+            if (path.ObstructionEthereal)
+            {
+                group = i & ~3;
+                kept = (0xFu << (i - group)) & 0xFu;
+            }
+            else
+            {
+                group = _obstacles.NextKept(i, NumShadowObjects, reach, BoxToCellOffset(reach, block), out kept);
+            }
+
+            bool tested = false;
+            for (; kept != 0; kept &= kept - 1)
+            {
+                int k = group + BitOperations.TrailingZeroCount(kept);
+                if (k >= NumShadowObjects)
+                {
+                    break;
+                }
+
+                if (ObstacleSummary.Verify)
+                {
+                    VerifyPassedOver(i, k, transition, reach);
+                    VerifyEntry(k);
+                }
+
+                i = k + 1;
+                PhysicsObj obj = _shadowObjects[k].PhysObj;
+                if (obj.Parent is not null || ReferenceEquals(obj, transition.ObjectInfo.Object))
+                {
+                    continue;
+                }
+
+                if (obj.IsOutOfReach(reach))
+                {
+                    // Skipping can only clear the obstruction flag: nothing to do when it is clear.
+                    if (path.ObstructionEthereal)
+                    {
+                        obj.SkipOutOfReach(transition);
+                    }
+
+                    continue;
+                }
+
+                TransitionState result = obj.FindObjCollisions(transition);
+                if (result != TransitionState.Ok)
+                {
+                    return result;
+                }
+
+                // A new box: the rest of the group is decided again against it.
+                reach = new ObjectReach(path);
+                tested = true;
+                break;
+            }
+
+            if (!tested)
+            {
+                int next = Math.Min(group + 4, NumShadowObjects);
+                if (ObstacleSummary.Verify)
+                {
+                    VerifyPassedOver(i, next, transition, reach);
+                }
+
+                if (next >= NumShadowObjects)
+                {
+                    return TransitionState.Ok;
+                }
+
+                i = next;
+            }
+        }
+    }
+
+    // The offset that carries an origin of this cell's landblock into the box's, as IsOutOfReach computes it for an object of
+    // this landblock (GetBlockOffset, after its own same-landblock test).
+    private static Vector3 BoxToCellOffset(in ObjectReach reach, uint block) =>
+        (reach.CellId >> 16) == block ? Vector3.Zero : LandDefs.GetBlockOffset(reach.CellId, block << 16 | 1u);
+
+    // The check of ObstacleSummary.Verify: the entry is what this cell stores for its object as it stands.
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private void VerifyEntry(int i)
+    {
+        PhysicsObj obj = _shadowObjects[i].PhysObj;
+        ObstacleSummary fresh = obj.ComputeObstacleSummary();
+        if (!_obstacles.Holds(i, fresh, Id >> 16))
+        {
+            throw new InvalidOperationException(
+                $"Stale obstacle summary of object 0x{obj.Id:X8} in cell 0x{Id:X8}: stored {_obstacles.Describe(i)}, fresh {fresh}.");
+        }
+    }
+
+    // The check of ObstacleSummary.Verify for the entries [from, to) the vector test passed over: each entry is fresh, and
+    // each is one the reference loop skips without effect (an attached object, the mover, or one out of reach by the object's
+    // own IsOutOfReach, with the obstruction flag clear).
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private void VerifyPassedOver(int from, int to, Transition transition, in ObjectReach reach)
+    {
+        for (int k = from; k < to; k++)
+        {
+            VerifyEntry(k);
+            PhysicsObj obj = _shadowObjects[k].PhysObj;
+            bool skipped = obj.Parent is not null || ReferenceEquals(obj, transition.ObjectInfo.Object) || obj.IsOutOfReach(reach);
+            if (!skipped || transition.SpherePath.ObstructionEthereal)
+            {
+                throw new InvalidOperationException(
+                    $"The vector test passed over 0x{obj.Id:X8} (shadow {k} of cell 0x{Id:X8}), which the loop would test.");
+            }
+        }
     }
 
     /// <summary>True when <paramref name="obj"/>, where it stands, overlaps an object shadowed in this cell.</summary>

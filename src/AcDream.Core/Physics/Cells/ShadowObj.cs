@@ -24,6 +24,11 @@ internal sealed class ShadowObj
     /// <summary>The cell that lists the shadow, or null (cell not loaded, or removed). Retail: <c>cell</c>.</summary>
     public ObjCell? Cell { get; internal set; }
 
+    /// <summary>The shadow's index in <see cref="Cell"/>'s list while it is listed there (the index of its
+    /// <see cref="ObstacleSummary"/>; kept by the cell's add and remove).</summary>
+    // non-retail: retail finds a shadow by a search of the list
+    internal int Slot { get; set; }
+
     /// <summary>Points the shadow at <paramref name="physObj"/>.</summary>
     // retail: CShadowObj::set_physobj (acclient.c:329718)
     internal void SetPhysObj(PhysicsObj physObj) => PhysObj = physObj;

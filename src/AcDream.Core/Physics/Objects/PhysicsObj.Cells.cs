@@ -20,6 +20,8 @@ public sealed partial class PhysicsObj
             {
                 Rare(true)!.Parent = value;
             }
+
+            SyncObstacleSummary();
         }
     }
 
@@ -183,6 +185,7 @@ public sealed partial class PhysicsObj
         else
         {
             _position.ObjCellId = 0;
+            SyncObstacleSummary();
             if ((_state & PhysicsState.ParticleEmitter) == 0)
             {
                 PartArray?.SetCellId(0);
@@ -220,6 +223,7 @@ public sealed partial class PhysicsObj
         }
 
         _position.ObjCellId = cellId;
+        SyncObstacleSummary();
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
             PartArray.SetCellId(cellId);
@@ -291,6 +295,7 @@ public sealed partial class PhysicsObj
         {
             PhysicsObj c = children.GetObject(i);
             c._position.ObjCellId = id;
+            c.SyncObstacleSummary();
             if ((c._state & PhysicsState.ParticleEmitter) == 0)
             {
                 c.PartArray?.SetCellId(id);

@@ -212,6 +212,7 @@ public sealed partial class PhysicsObj
         Touch();
         PartArray?.SetScale(scale);
         Scale = scale;
+        SyncObstacleSummary();
     }
 
     /// <summary>Fades the translucency from 0 to <paramref name="translucency"/> over <paramref name="delta"/> seconds (retail

@@ -143,7 +143,10 @@ public sealed partial class PhysicsObj
     /// <paramref name="reach"/>: it has no physics BSP, the built-in part array without cylinder spheres, and its spheres
     /// (all within |scale| · <see cref="SimplePartArray.ObstacleReach"/> of its origin, whatever its orientation) lie
     /// outside the box. <see cref="FindObjCollisions"/> then answers OK without touching anything but the obstruction
-    /// flag; the cell's object loop calls <see cref="SkipOutOfReach"/> instead.
+    /// flag; the cell's object loop calls <see cref="SkipOutOfReach"/> instead. The loop first passes over, from its cell's
+    /// <see cref="ObstacleTable"/>, the obstacles that a packed copy of these inputs (<see cref="ObstacleSummary"/>, with the
+    /// reach rounded up) already shows out of reach, without reading them; it asks this of the others, and
+    /// <see cref="ObstacleSummary.Verify"/> checks each one passed over against it.
     /// </summary>
     // non-retail: the exact early-out of ObjectReach (retail tests every sphere)
     [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]

@@ -43,6 +43,7 @@ public sealed partial class PhysicsObj
         }
 
         _position.Frame = f;
+        SyncObstacleSummary();
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
             PartArray?.SetFrame(_position.Frame);
@@ -64,6 +65,7 @@ public sealed partial class PhysicsObj
         Touch();
         CutPose();
         _position.Frame = frame;
+        SyncObstacleSummary();
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
             PartArray?.SetFrame(_position.Frame);
@@ -119,6 +121,7 @@ public sealed partial class PhysicsObj
             LandDefs.AdjustToOutside(ref np.ObjCellId, ref np.Frame.Origin);
         }
 
+        // The obstacle summary follows in SetFrameInternal.
         _position.ObjCellId = np.ObjCellId;
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
@@ -319,6 +322,7 @@ public sealed partial class PhysicsObj
         if (CellId == cellId)
         {
             uint id = pos.ObjCellId;
+            // The obstacle summary follows in SetFrameInternal, below.
             _position.ObjCellId = id;
             if ((_state & PhysicsState.ParticleEmitter) == 0)
             {

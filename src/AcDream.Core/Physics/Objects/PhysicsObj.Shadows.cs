@@ -60,13 +60,14 @@ public sealed partial class PhysicsObj
                 s.CellId = cells[i].CellId;
             }
 
+            ObstacleSummary summary = ComputeObstacleSummary();
             for (int i = 0; i < n; i++)
             {
                 ObjCell? cell = cells[i].Cell;
                 if (cell is not null)
                 {
                     // Retail also hands the parts to the cell for drawing (CPartArray::AddPartsShadow): renderer only.
-                    cell.AddShadowObject(_shadowObjects[i]);
+                    cell.AddShadowObject(_shadowObjects[i], summary);
                 }
                 else
                 {

@@ -24,6 +24,7 @@ public sealed partial class PhysicsObj
         Touch();
         EnterCell(cell.Id);
         _position.Frame = frame;
+        SyncObstacleSummary();
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
             PartArray?.SetFrame(_position.Frame);

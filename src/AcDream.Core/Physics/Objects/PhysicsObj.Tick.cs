@@ -378,6 +378,7 @@ public sealed partial class PhysicsObj
         }
 
         _position.Frame = frame;
+        SyncObstacleSummary();
         if ((_state & PhysicsState.ParticleEmitter) == 0)
         {
             IPartArray? parts = _partArray;

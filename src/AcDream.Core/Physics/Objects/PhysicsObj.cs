@@ -271,6 +271,8 @@ public sealed partial class PhysicsObj
             {
                 animated.Owner = this;
             }
+
+            SyncObstacleSummary();
         }
     }
 
@@ -366,6 +368,10 @@ public sealed partial class PhysicsObj
         Touch();
         PhysicsState changed = newState ^ _state;
         _state = newState;
+        if ((changed & PhysicsState.HasPhysicsBsp) != 0)
+        {
+            SyncObstacleSummary();
+        }
         if ((changed & PhysicsState.Hidden) != 0)
         {
             SetHidden((newState & PhysicsState.Hidden) != 0);

@@ -131,6 +131,7 @@ public sealed partial class SimplePartArray : IPartCollision
         if (_cylSpheres.Length != 0)
         {
             ObstacleReach = -1f;
+            Owner?.SyncObstacleSummary();
             return;
         }
 
@@ -144,6 +145,7 @@ public sealed partial class SimplePartArray : IPartCollision
         // Rounded up to the next float, so that the stored value never falls short of the double bound.
         float f = (float)reach;
         ObstacleReach = f < reach ? MathF.BitIncrement(f) : f;
+        Owner?.SyncObstacleSummary();
     }
 
     /// <inheritdoc />
