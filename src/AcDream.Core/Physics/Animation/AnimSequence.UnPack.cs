@@ -98,6 +98,7 @@ public sealed partial class AnimSequence
             AnimSequenceNode node = RentNode();
             node.Init(anims[i], _animations);
             InsertAfter(node, _tail);
+            PrepareRootMotionMemo(node); // non-retail (#38): the memo is made here, not in the update
             if (i == (int)firstCyclicIndex)
             {
                 first = node;

@@ -82,7 +82,9 @@ public sealed partial class AnimSequence
 
                 for (; Math.Floor(frameNumber) > lastFrame; ++lastFrame)
                 {
-                    if (hasFrame)
+                    // non-retail (#38): the first frame from an identity offset frame may come from the memo (RootMotionMemo.cs)
+                    RootMotionMemo? memo = _rootMotionMemo;
+                    if (hasFrame && (memo is null || !TryRootMotionFromMemo(memo, curr, lastFrame, quantum, ref retval)))
                     {
                         curr.CombinePosFrame(lastFrame, ref retval);
 

@@ -222,6 +222,7 @@ public sealed partial class AnimSequence
         if (node.HasAnim())
         {
             InsertAfter(node, _tail);
+            PrepareRootMotionMemo(node); // non-retail (#38): the memo is made here, not in the update
             _firstCyclic = _tail;
             if (_currAnim is null)
             {
