@@ -39,6 +39,7 @@ internal static class InstructionCounts
         ["resting-10000"] = () => Resting(10000),
         ["crowd-100"] = () => { var c = new HoltburgCrowd(100); return () => c.TickOnce(); },
         ["crowd-1000"] = () => { var c = new HoltburgCrowd(1000); return () => c.TickOnce(); },
+        ["animated-crowd"] = () => { var b = new AnimatedPartArrayBenchmarks(); b.Setup(); return b.AnimatedCrowdOf100Tick; },
     };
 
     /// <summary>Runs the row; 0 when it ran, 2 for an unknown row or a bad count.</summary>

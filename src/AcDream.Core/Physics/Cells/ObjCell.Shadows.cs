@@ -162,7 +162,67 @@ public abstract partial class ObjCell
             return TransitionState.Ok;
         }
 
-        return transition.ReferencePaths ? FindShadowObjCollisionsRetail(transition) : FindShadowObjCollisionsSkipping(transition);
+        if (transition.ReferencePaths)
+        {
+            return FindShadowObjCollisionsRetail(transition);
+        }
+
+        return NumShadowObjects <= ShortShadowList ? FindShadowObjCollisionsOneByOne(transition) : FindShadowObjCollisionsSkipping(transition);
+    }
+
+    // The longest shadow list decided one entry at a time without the table's vector pass: a list of one group of four or
+    // fewer (the mover alone, or a few neighbours) costs less read directly than the pass's setup (the box, the margins and the
+    // landblock offset broadcast to eleven vectors), and its few objects are a few cache lines.
+    internal const int ShortShadowList = 4;
+
+    // non-retail: CObjCell::find_obj_collisions (acclient.c:347141) with the exact early-out of ObjectReach, entry by entry
+    // (a short list): an obstacle whose spheres cannot reach the check spheres is skipped with the exact effect of testing
+    // it; the box is made when the first obstacle is met and again after every obstacle really tested, since a test that
+    // answers OK may still have moved the check position (a step up).
+    private TransitionState FindShadowObjCollisionsOneByOne(Transition transition)
+    {
+        PhysicsObj? mover = transition.ObjectInfo.Object;
+        bool reachValid = false;
+        ObjectReach reach = default;
+        for (int i = 0; i < NumShadowObjects; i++)
+        {
+            if (ObstacleSummary.Verify)
+            {
+                VerifyEntry(i);
+            }
+
+            PhysicsObj obj = _shadowObjects[i].PhysObj;
+            if (obj.Parent is not null || ReferenceEquals(obj, mover))
+            {
+                continue;
+            }
+
+            if (!reachValid)
+            {
+                reach = new ObjectReach(transition.SpherePath);
+                reachValid = true;
+            }
+
+            if (obj.IsOutOfReach(reach))
+            {
+                // Skipping can only clear the obstruction flag: nothing to do when it is clear.
+                if (transition.SpherePath.ObstructionEthereal)
+                {
+                    obj.SkipOutOfReach(transition);
+                }
+
+                continue;
+            }
+
+            reachValid = false;
+            TransitionState result = obj.FindObjCollisions(transition);
+            if (result != TransitionState.Ok)
+            {
+                return result;
+            }
+        }
+
+        return TransitionState.Ok;
     }
 
     // retail: CObjCell::find_obj_collisions (acclient.c:347141), the loop as retail runs it (RetailSweep.ReferencePaths)
