@@ -7,7 +7,7 @@ namespace AcDream.Core.Physics.Animation;
 // non-retail (#38): a memo of the first frame an update crosses. Every update starts from an identity offset frame
 // (CPhysicsObj::UpdatePositionInternal hands the part array a fresh one), so the first frame crossed forwards turns the
 // identity into apply_physics(combine(Identity, pos_frame[k]), ±|1/framerate|): a pure function of the animation and frame
-// k (its root motion, immutable), the node's framerate, the direction (the sign of the quantum) and the sequence's velocity
+// k (its root motion, immutable), the node's framerate, the direction (the sign of the quantum, in this loop the framerate's) and the sequence's velocity
 // and omega. The sequence keeps the results it worked out, keyed by the bits of all of these, and copies one when the key
 // repeats (a cycle playing at a constant velocity): the combine, apply_physics' products, grotate's quaternion product, its
 // square root and division and set_rotate's matrix are skipped. The copy is the bits the same code gave before, so the
@@ -108,33 +108,33 @@ public sealed partial class AnimSequence
             memo.Rekey(_velocity, _omega);
         }
 
+        // The direction (the quantum's sign) is the framerate's: the forward loop runs only when framerate × quantum > 0, so
+        // the framerate's bits key it too.
         ref RootMotionMemo.Entry e = ref memo.Entries[fn & (memo.Entries.Length - 1)];
-        bool backward = quantum < 0.0;
         if (e.Generation == memo.Generation && e.Clip == clip && e.FrameIndex == fn
-            && e.FramerateBits == BitConverter.SingleToInt32Bits(framerate) && e.Backward == backward)
+            && e.FramerateBits == BitConverter.SingleToInt32Bits(framerate))
         {
             retval = e.Result;
             return true;
         }
 
-        RootMotionMiss(ref e, memo.Generation, clip, fromIdentity, fn, framerate, quantum, ref retval);
+        RootMotionMiss(ref e, memo.Generation, curr, fn, framerate, quantum, ref retval);
         return true;
     }
 
     // The memo's miss, out of line: what CombinePosFrame and ApplyPhysics do from an identity frame, kept when finite.
     [MethodImpl(MethodImplOptions.NoInlining)]
-    private void RootMotionMiss(ref RootMotionMemo.Entry e, uint generation, AnimClip clip, Frame[] fromIdentity, int fn,
-        float framerate, double quantum, ref Frame retval)
+    private void RootMotionMiss(ref RootMotionMemo.Entry e, uint generation, AnimSequenceNode curr, int fn, float framerate,
+        double quantum, ref Frame retval)
     {
-        retval = fromIdentity[fn];
+        curr.CombinePosFrame(fn, ref retval);
         ApplyPhysics(ref retval, 1.0 / (double)framerate, quantum);
         if (VectorMath.IsFinite(retval.Origin) && VectorMath.IsFinite(retval.Rotation))
         {
             e.Result = retval;
-            e.Clip = clip;
+            e.Clip = curr.Anim;
             e.FrameIndex = fn;
             e.FramerateBits = BitConverter.SingleToInt32Bits(framerate);
-            e.Backward = quantum < 0.0;
             e.Generation = generation;
         }
         else
@@ -201,7 +201,6 @@ public sealed partial class AnimSequence
             internal int FrameIndex;
             internal int FramerateBits;
             internal uint Generation;
-            internal bool Backward;
         }
     }
 }

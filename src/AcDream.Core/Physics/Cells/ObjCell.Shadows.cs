@@ -162,12 +162,9 @@ public abstract partial class ObjCell
             return TransitionState.Ok;
         }
 
-        if (transition.ReferencePaths)
-        {
-            return FindShadowObjCollisionsRetail(transition);
-        }
-
-        return NumShadowObjects <= ShortShadowList ? FindShadowObjCollisionsOneByOne(transition) : FindShadowObjCollisionsSkipping(transition);
+        bool skipFar = !transition.ReferencePaths;
+        return skipFar && NumShadowObjects > ShortShadowList ? FindShadowObjCollisionsSkipping(transition)
+            : FindShadowObjCollisionsOneByOne(transition, skipFar);
     }
 
     // The longest shadow list decided one entry at a time without the table's vector pass: a list of one group of four or
@@ -175,11 +172,12 @@ public abstract partial class ObjCell
     // landblock offset broadcast to eleven vectors), and its few objects are a few cache lines.
     internal const int ShortShadowList = 4;
 
-    // non-retail: CObjCell::find_obj_collisions (acclient.c:347141) with the exact early-out of ObjectReach, entry by entry
-    // (a short list): an obstacle whose spheres cannot reach the check spheres is skipped with the exact effect of testing
-    // it; the box is made when the first obstacle is met and again after every obstacle really tested, since a test that
-    // answers OK may still have moved the check position (a step up).
-    private TransitionState FindShadowObjCollisionsOneByOne(Transition transition)
+    // retail: CObjCell::find_obj_collisions (acclient.c:347141), entry by entry: retail's loop with skipFar false
+    // (RetailSweep.ReferencePaths); with it (a short list), non-retail: the exact early-out of ObjectReach, an obstacle whose
+    // spheres cannot reach the check spheres skipped with the exact effect of testing it. The box is made when the first
+    // obstacle is met and again after every obstacle really tested, since a test that answers OK may still have moved the
+    // check position (a step up).
+    private TransitionState FindShadowObjCollisionsOneByOne(Transition transition, bool skipFar)
     {
         PhysicsObj? mover = transition.ObjectInfo.Object;
         bool reachValid = false;
@@ -197,24 +195,28 @@ public abstract partial class ObjCell
                 continue;
             }
 
-            if (!reachValid)
+            if (skipFar)
             {
-                reach = new ObjectReach(transition.SpherePath);
-                reachValid = true;
-            }
-
-            if (obj.IsOutOfReach(reach))
-            {
-                // Skipping can only clear the obstruction flag: nothing to do when it is clear.
-                if (transition.SpherePath.ObstructionEthereal)
+                if (!reachValid)
                 {
-                    obj.SkipOutOfReach(transition);
+                    reach = new ObjectReach(transition.SpherePath);
+                    reachValid = true;
                 }
 
-                continue;
+                if (obj.IsOutOfReach(reach))
+                {
+                    // Skipping can only clear the obstruction flag: nothing to do when it is clear.
+                    if (transition.SpherePath.ObstructionEthereal)
+                    {
+                        obj.SkipOutOfReach(transition);
+                    }
+
+                    continue;
+                }
+
+                reachValid = false;
             }
 
-            reachValid = false;
             TransitionState result = obj.FindObjCollisions(transition);
             if (result != TransitionState.Ok)
             {
@@ -223,27 +225,6 @@ public abstract partial class ObjCell
         }
 
         return TransitionState.Ok;
-    }
-
-    // retail: CObjCell::find_obj_collisions (acclient.c:347141), the loop as retail runs it (RetailSweep.ReferencePaths)
-    private TransitionState FindShadowObjCollisionsRetail(Transition transition)
-    {
-        TransitionState result = TransitionState.Ok;
-        PhysicsObj? mover = transition.ObjectInfo.Object;
-        for (int i = 0; i < NumShadowObjects; i++)
-        {
-            PhysicsObj obj = _shadowObjects[i].PhysObj;
-            if (obj.Parent is null && !ReferenceEquals(obj, mover))
-            {
-                result = obj.FindObjCollisions(transition);
-                if (result != TransitionState.Ok)
-                {
-                    break;
-                }
-            }
-        }
-
-        return result;
     }
 
     // non-retail: CObjCell::find_obj_collisions (acclient.c:347141) with the exact early-out of ObjectReach: an obstacle whose

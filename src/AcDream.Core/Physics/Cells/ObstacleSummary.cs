@@ -56,10 +56,6 @@ internal struct ObstacleSummary
             $"(reach {Reach:R} at {X:R}, {Y:R}, {Z:R} in 0x{CellId:X8})");
 
     /// <summary>The reach |<paramref name="scale"/>| · <paramref name="bound"/> (in double), rounded up to a float.</summary>
-    public static float RoundUpReach(float scale, float bound)
-    {
-        double reach = Math.Abs((double)scale) * bound;
-        float f = (float)reach;
-        return f < reach ? MathF.BitIncrement(f) : f;
-    }
+    public static float RoundUpReach(float scale, float bound) =>
+        Objects.Parts.SimplePartArray.RoundUpToFloat(Math.Abs((double)scale) * bound);
 }

@@ -152,13 +152,7 @@ public sealed partial class PhysicsObj
     [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
     internal bool IsOutOfReach(in ObjectReach reach)
     {
-        if ((_state & PhysicsState.HasPhysicsBsp) != 0 || _partArray is not SimplePartArray parts)
-        {
-            return false;
-        }
-
-        float bound = parts.ObstacleReach;
-        if (!(bound >= 0f))
+        if (!TryGetSphereReach(out float bound))
         {
             return false;
         }
@@ -167,6 +161,21 @@ public sealed partial class PhysicsObj
         Vector3 b = (reach.CellId >> 16) == (_position.ObjCellId >> 16) ? Vector3.Zero : LandDefs.GetBlockOffset(reach.CellId, _position.ObjCellId);
         Vector3 o = _position.Frame.Origin;
         return reach.Excludes((double)b.X + o.X, (double)b.Y + o.Y, (double)b.Z + o.Z, Math.Abs((double)Scale) * bound);
+    }
+
+    /// <summary>The object's <see cref="SimplePartArray.ObstacleReach"/> (at scale 1) when its shapes are spheres alone: no
+    /// physics BSP, the built-in part array, no cylinder spheres; false otherwise (the object is then tested in full).</summary>
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    internal bool TryGetSphereReach(out float bound)
+    {
+        bound = 0f;
+        if ((_state & PhysicsState.HasPhysicsBsp) != 0 || _partArray is not SimplePartArray parts)
+        {
+            return false;
+        }
+
+        bound = parts.ObstacleReach;
+        return bound >= 0f;
     }
 
     /// <summary>

@@ -26,13 +26,13 @@ public sealed partial class PhysicsObj
         {
             s.Reach = ObstacleSummary.Parented;
         }
-        else if ((_state & PhysicsState.HasPhysicsBsp) != 0 || _partArray is not SimplePartArray parts || !(parts.ObstacleReach >= 0f))
+        else if (TryGetSphereReach(out float bound))
         {
-            s.Reach = ObstacleSummary.TestFully;
+            s.Reach = ObstacleSummary.RoundUpReach(Scale, bound);
         }
         else
         {
-            s.Reach = ObstacleSummary.RoundUpReach(Scale, parts.ObstacleReach);
+            s.Reach = ObstacleSummary.TestFully;
         }
 
         return s;

@@ -143,9 +143,16 @@ public sealed partial class SimplePartArray : IPartCollision
         }
 
         // Rounded up to the next float, so that the stored value never falls short of the double bound.
-        float f = (float)reach;
-        ObstacleReach = f < reach ? MathF.BitIncrement(f) : f;
+        ObstacleReach = RoundUpToFloat(reach);
         Owner?.SyncObstacleSummary();
+    }
+
+    /// <summary><paramref name="value"/> rounded to the nearest float at or above it (a stored bound never falls short of
+    /// the double one).</summary>
+    internal static float RoundUpToFloat(double value)
+    {
+        float f = (float)value;
+        return f < value ? MathF.BitIncrement(f) : f;
     }
 
     /// <inheritdoc />
